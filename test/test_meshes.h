@@ -1,0 +1,151 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Meshes the tests build themselves, and access to CGAL's sample meshes extracted by CMake.
+
+#ifndef CGAL_GRAPHCUT_REMESHING_TEST_MESHES_H
+#define CGAL_GRAPHCUT_REMESHING_TEST_MESHES_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace graphcut_remeshing_test {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Vector = Kernel::Vector_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+
+inline const double pi = std::acos(-1.0);
+
+inline Mesh mesh_from_soup(const std::vector<Point>& points,
+                           const std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
+  return mesh;
+}
+
+inline Mesh make_triangle(const Point& a, const Point& b, const Point& c)
+{
+  return mesh_from_soup({a, b, c}, {{{0, 1, 2}}});
+}
+
+// An n x m grid of vertices (n, m >= 2) placed by `place(i, j)`; every quad is split by the same
+// diagonal, so interior vertices have valence 6 and border vertices other than corners valence 4.
+inline Mesh make_grid(std::size_t n, std::size_t m, const std::function<Point(std::size_t, std::size_t)>& place)
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(std::size_t j = 0; j < m; ++j)
+    for(std::size_t i = 0; i < n; ++i)
+      points.push_back(place(i, j));
+  auto id = [n](std::size_t i, std::size_t j) { return j * n + i; };
+  for(std::size_t j = 0; j + 1 < m; ++j)
+    for(std::size_t i = 0; i + 1 < n; ++i)
+    {
+      triangles.push_back({{id(i, j), id(i + 1, j), id(i + 1, j + 1)}});
+      triangles.push_back({{id(i, j), id(i + 1, j + 1), id(i, j + 1)}});
+    }
+  return mesh_from_soup(points, triangles);
+}
+
+// A patch of the regular triangular lattice: n x n vertices, all triangles equilateral with side `h`.
+inline Mesh make_equilateral_patch(std::size_t n, double h)
+{
+  return make_grid(n, n, [h](std::size_t i, std::size_t j) {
+    return Point(h * (double(i) - 0.5 * double(j)), h * std::sqrt(3.0) / 2 * double(j), 0);
+  });
+}
+
+// A torus (R, r) whose n x m grid wraps in both directions: every vertex has valence 6.
+inline Mesh make_torus(std::size_t n, std::size_t m, double R, double r)
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(std::size_t j = 0; j < m; ++j)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const double u = 2 * pi * double(i) / double(n), v = 2 * pi * double(j) / double(m);
+      points.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
+                          r * std::sin(v));
+    }
+  auto id = [n, m](std::size_t i, std::size_t j) { return (j % m) * n + (i % n); };
+  for(std::size_t j = 0; j < m; ++j)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      triangles.push_back({{id(i, j), id(i + 1, j), id(i + 1, j + 1)}});
+      triangles.push_back({{id(i, j), id(i + 1, j + 1), id(i, j + 1)}});
+    }
+  return mesh_from_soup(points, triangles);
+}
+
+// A sphere: an icosahedron whose triangles are split in four `levels` times, vertices pushed onto
+// the sphere.
+inline Mesh make_sphere(unsigned levels, double radius = 1.0, const Point& center = CGAL::ORIGIN)
+{
+  const double t = (1.0 + std::sqrt(5.0)) / 2;
+  std::vector<std::array<double, 3> > p = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                                           {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                                           {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<std::size_t, 3> > f = {
+    {0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+    {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+    {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  for(unsigned l = 0; l < levels; ++l)
+  {
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> midpoint;
+    auto middle = [&](std::size_t a, std::size_t b) {
+      const auto key = std::make_pair((std::min)(a, b), (std::max)(a, b));
+      auto it = midpoint.find(key);
+      if(it != midpoint.end())
+        return it->second;
+      p.push_back({{(p[a][0] + p[b][0]) / 2, (p[a][1] + p[b][1]) / 2, (p[a][2] + p[b][2]) / 2}});
+      midpoint.emplace(key, p.size() - 1);
+      return p.size() - 1;
+    };
+    std::vector<std::array<std::size_t, 3> > g;
+    for(const auto& tri : f)
+    {
+      const std::size_t ab = middle(tri[0], tri[1]), bc = middle(tri[1], tri[2]),
+                        ca = middle(tri[2], tri[0]);
+      g.push_back({{tri[0], ab, ca}});
+      g.push_back({{tri[1], bc, ab}});
+      g.push_back({{tri[2], ca, bc}});
+      g.push_back({{ab, bc, ca}});
+    }
+    f.swap(g);
+  }
+  std::vector<Point> points;
+  for(const auto& q : p)
+  {
+    const double s = radius / std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    points.emplace_back(center.x() + s * q[0], center.y() + s * q[1], center.z() + s * q[2]);
+  }
+  return mesh_from_soup(points, f);
+}
+
+// One of CGAL's sample meshes, extracted into the build tree by CMake.
+inline Mesh load_sample_mesh(const std::string& name)
+{
+  Mesh mesh;
+  const std::string path = std::string(GRAPHCUT_REMESHING_DATA_DIR) + "/" + name + ".off";
+  if(!CGAL::IO::read_polygon_mesh(path, mesh) || num_faces(mesh) == 0)
+    ADD_FAILURE() << "cannot read " << path;
+  return mesh;
+}
+
+} // namespace graphcut_remeshing_test
+
+#endif // CGAL_GRAPHCUT_REMESHING_TEST_MESHES_H
