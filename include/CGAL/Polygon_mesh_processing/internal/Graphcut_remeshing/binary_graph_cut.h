@@ -1,0 +1,408 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The binary decision of section 2.4: minimise a sum of unary, pairwise and triple terms over
+// binary variables (0 = keep the current position, 1 = take the candidate) with one s-t minimum cut.
+//
+// Each term is written as a multilinear polynomial. A cubic coefficient is reduced with one
+// auxiliary node (Kolmogorov & Zabih's class F3 construction). Per-variable label mappings
+// (which of keep / move is the graph's 0) are chosen greedily, as the paper does, to make as many
+// terms representable as possible. The pairwise coefficients that remain supermodular are replaced
+// by linear upper bounds that are exact at the current labelling (all keep): the cut minimises an
+// upper bound of the energy that is tight at the current labelling, so the labelling it returns
+// never has a higher energy than keeping everything.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_BINARY_GRAPH_CUT_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_BINARY_GRAPH_CUT_H
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <limits>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Graphcut_remeshing {
+
+class Binary_graph_cut
+{
+public:
+  static constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
+
+  explicit Binary_graph_cut(std::size_t number_of_variables)
+    : m_unary(number_of_variables, 0.), m_adjacent_terms(number_of_variables)
+  {}
+
+  std::size_t number_of_variables() const { return m_unary.size(); }
+
+  // Energy e0 if variable i is 0, e1 if it is 1.
+  void add_unary(std::size_t i, double e0, double e1)
+  {
+    m_constant += e0;
+    m_unary[i] += e1 - e0;
+  }
+
+  // A term of two or three variables given by its table: e[a + 2b] or e[a + 2b + 4c] for the
+  // labels a, b (, c) of i, j (, k). Pass `none` as k for a pairwise term.
+  void add_term(std::size_t i, std::size_t j, std::size_t k, const std::array<double, 8>& e)
+  {
+    Term t;
+    t.variables = {{i, j, k}};
+    if(k == none)
+    {
+      // e(a,b) = e00 + a(e10-e00) + b(e01-e00) + ab(e11-e10-e01+e00)
+      t.constant = e[0];
+      t.linear = {{e[1] - e[0], e[2] - e[0], 0.}};
+      t.quadratic = {{e[3] - e[1] - e[2] + e[0], 0., 0.}}; // pairs (i,j), (i,k), (j,k)
+      t.cubic = 0;
+    }
+    else
+    {
+      // Moebius inversion of the 8-entry table into the multilinear coefficients.
+      t.constant = e[0];
+      t.linear = {{e[1] - e[0], e[2] - e[0], e[4] - e[0]}};
+      t.quadratic = {{e[3] - e[1] - e[2] + e[0], e[5] - e[1] - e[4] + e[0], e[6] - e[2] - e[4] + e[0]}};
+      t.cubic = e[7] - e[3] - e[5] - e[6] + e[1] + e[2] + e[4] - e[0];
+    }
+    const std::size_t index = m_terms.size();
+    m_terms.push_back(t);
+    for(std::size_t v : t.variables)
+      if(v != none)
+        m_adjacent_terms[v].push_back(index);
+  }
+
+  // Energy of a labelling, straight from the terms (the exact energy, not the graph's bound).
+  double energy(const std::vector<char>& labels) const
+  {
+    double e = m_constant;
+    for(std::size_t i = 0; i < m_unary.size(); ++i)
+      if(labels[i])
+        e += m_unary[i];
+    for(const Term& t : m_terms)
+      e += t.value(labels);
+    return e;
+  }
+
+  // Number of terms that were representable (submodular) under the chosen mappings, after `solve`.
+  std::size_t number_of_representable_terms() const { return m_representable; }
+
+  // Minimises the energy, starting from the all-zero labelling, and returns the labels.
+  std::vector<char> solve()
+  {
+    choose_mappings();
+    return cut();
+  }
+
+private:
+  struct Term
+  {
+    std::array<std::size_t, 3> variables;
+    double constant;
+    std::array<double, 3> linear;
+    std::array<double, 3> quadratic; // (0,1), (0,2), (1,2)
+    double cubic;
+
+    double value(const std::vector<char>& labels) const
+    {
+      const double a = labels[variables[0]], b = labels[variables[1]];
+      const double c = variables[2] == none ? 0. : double(labels[variables[2]]);
+      return constant + linear[0] * a + linear[1] * b + linear[2] * c + quadratic[0] * a * b +
+             quadratic[1] * a * c + quadratic[2] * b * c + cubic * a * b * c;
+    }
+  };
+
+  static constexpr std::array<std::array<int, 2>, 3> pairs{{{{0, 1}}, {{0, 2}}, {{1, 2}}}};
+
+  // A term is representable under mappings m when each of its pairs, with both projections on the
+  // third variable, is submodular once the variables are flipped as m says.
+  bool representable(const Term& t, const std::vector<signed char>& m) const
+  {
+    const int arity = t.variables[2] == none ? 2 : 3;
+    for(int p = 0; p < (arity == 3 ? 3 : 1); ++p)
+    {
+      const std::size_t u = t.variables[pairs[p][0]], v = t.variables[pairs[p][1]];
+      const bool flipped = (m[u] != m[v]);
+      // Both projections of the pair: third variable at 0 gives q, at 1 gives q + cubic.
+      const double q0 = t.quadratic[p];
+      const double q1 = arity == 3 ? t.quadratic[p] + t.cubic : q0;
+      if(!flipped && (q0 > 0 || q1 > 0))
+        return false;
+      if(flipped && (q0 < 0 || q1 < 0))
+        return false;
+    }
+    return true;
+  }
+
+  // The paper's greedy mapping: visit the terms in breadth-first order over shared variables; for
+  // each term try every mapping of its not yet mapped variables and keep the one that makes the
+  // most of its terms (this one and the already visited neighbours) representable.
+  void choose_mappings()
+  {
+    const std::size_t n = m_unary.size();
+    m_mapping.assign(n, -1);
+    std::vector<char> visited(m_terms.size(), 0);
+    std::deque<std::size_t> queue;
+    for(std::size_t seed = 0; seed < m_terms.size(); ++seed)
+    {
+      if(visited[seed])
+        continue;
+      visited[seed] = 1;
+      queue.push_back(seed);
+      while(!queue.empty())
+      {
+        const std::size_t ti = queue.front();
+        queue.pop_front();
+        map_term(ti);
+        for(std::size_t v : m_terms[ti].variables)
+          if(v != none)
+            for(std::size_t tj : m_adjacent_terms[v])
+              if(!visited[tj])
+              {
+                visited[tj] = 1;
+                queue.push_back(tj);
+              }
+      }
+    }
+    for(std::size_t i = 0; i < n; ++i)
+      if(m_mapping[i] < 0)
+        m_mapping[i] = 0;
+    m_representable = 0;
+    for(const Term& t : m_terms)
+      if(representable(t, m_mapping))
+        ++m_representable;
+  }
+
+  void map_term(std::size_t ti)
+  {
+    const Term& t = m_terms[ti];
+    std::array<std::size_t, 3> free_vars{};
+    int number_free = 0;
+    for(std::size_t v : t.variables)
+      if(v != none && m_mapping[v] < 0)
+      {
+        bool seen = false;
+        for(int f = 0; f < number_free; ++f)
+          seen = seen || free_vars[f] == v;
+        if(!seen)
+          free_vars[number_free++] = v;
+      }
+    if(number_free == 0)
+      return;
+    int best = 0, best_score = -1;
+    for(int mask = 0; mask < (1 << number_free); ++mask)
+    {
+      for(int f = 0; f < number_free; ++f)
+        m_mapping[free_vars[f]] = static_cast<signed char>((mask >> f) & 1);
+      // Unmapped variables of other terms are not yet decided: count only this term.
+      const int score = representable(t, m_mapping) ? 1 : 0;
+      if(score > best_score)
+      {
+        best_score = score;
+        best = mask;
+      }
+    }
+    for(int f = 0; f < number_free; ++f)
+      m_mapping[free_vars[f]] = static_cast<signed char>((best >> f) & 1);
+  }
+
+  // Graph construction in the mapped variables y = x xor m. A polynomial in x becomes one in y by
+  // substituting x = 1 - y for mapped variables; we accumulate unary and pairwise coefficients over
+  // y, add auxiliary nodes for cubic terms, bound supermodular pairs, then cut.
+  std::vector<char> cut()
+  {
+    const std::size_t n = m_unary.size();
+    std::vector<double> unary(n, 0.);                                 // over y
+    std::map<std::pair<std::size_t, std::size_t>, double> pairwise;   // over y, key (min, max)
+    // An auxiliary node w of a reduced cubic term: unary cost `unary` when w = 1, and a
+    // (submodular, negative) coefficient `pairwise` on w * y for each of the three variables.
+    struct Aux { std::array<std::size_t, 3> variables; double unary; double pairwise; };
+    std::vector<Aux> aux;
+
+    auto add_linear = [&](std::size_t i, double c) {
+      // c * x_i with x_i = m ? 1 - y_i : y_i
+      if(m_mapping[i]) unary[i] -= c; // the constant part is irrelevant to the cut
+      else unary[i] += c;
+    };
+    auto add_quadratic = [&](std::size_t i, std::size_t j, double c) {
+      if(i == j) { add_linear(i, c); return; }
+      // c * x_i * x_j; with x = s + sign * y, s in {0,1}, sign in {+1,-1}
+      const double si = m_mapping[i] ? 1. : 0., gi = m_mapping[i] ? -1. : 1.;
+      const double sj = m_mapping[j] ? 1. : 0., gj = m_mapping[j] ? -1. : 1.;
+      unary[i] += c * gi * sj;
+      unary[j] += c * gj * si;
+      pairwise[std::make_pair((std::min)(i, j), (std::max)(i, j))] += c * gi * gj;
+    };
+    auto add_cubic = [&](const std::array<std::size_t, 3>& v, double c) {
+      // In y, after the mapping, c * x0 x1 x2 is again a cubic in y with coefficient
+      // c * g0 g1 g2 plus lower-order terms; expand (s + g y) products.
+      std::array<double, 3> s, g;
+      for(int a = 0; a < 3; ++a)
+      {
+        s[a] = m_mapping[v[a]] ? 1. : 0.;
+        g[a] = m_mapping[v[a]] ? -1. : 1.;
+      }
+      for(int a = 0; a < 3; ++a)
+      {
+        const int b = (a + 1) % 3, d = (a + 2) % 3;
+        unary[v[a]] += c * g[a] * s[b] * s[d];
+      }
+      for(int p = 0; p < 3; ++p)
+      {
+        const int a = pairs[p][0], b = pairs[p][1], d = 3 - a - b;
+        if(v[a] != v[b])
+          pairwise[std::make_pair((std::min)(v[a], v[b]), (std::max)(v[a], v[b]))] += c * g[a] * g[b] * s[d];
+        else
+          unary[v[a]] += c * g[a] * g[b] * s[d];
+      }
+      const double cy = c * g[0] * g[1] * g[2];
+      if(cy < 0)
+      {
+        // cy y0 y1 y2 = min_w cy w (y0 + y1 + y2 - 2)
+        aux.push_back({v, -2 * cy, cy});
+      }
+      else if(cy > 0)
+      {
+        // cy y0 y1 y2 = cy (y0y1 + y0y2 + y1y2) + min_w [cy w - cy w (y0 + y1 + y2)]
+        for(int p = 0; p < 3; ++p)
+        {
+          const std::size_t a = v[pairs[p][0]], b = v[pairs[p][1]];
+          if(a != b)
+            pairwise[std::make_pair((std::min)(a, b), (std::max)(a, b))] += cy;
+          else
+            unary[a] += cy;
+        }
+        aux.push_back({v, cy, -cy});
+      }
+    };
+
+    for(std::size_t i = 0; i < n; ++i)
+      add_linear(i, m_unary[i]);
+    for(const Term& t : m_terms)
+    {
+      const std::size_t i = t.variables[0], j = t.variables[1], k = t.variables[2];
+      add_linear(i, t.linear[0]);
+      add_linear(j, t.linear[1]);
+      add_quadratic(i, j, t.quadratic[0]);
+      if(k != none)
+      {
+        add_linear(k, t.linear[2]);
+        add_quadratic(i, k, t.quadratic[1]);
+        add_quadratic(j, k, t.quadratic[2]);
+        if(t.cubic != 0)
+          add_cubic(t.variables, t.cubic);
+      }
+    }
+
+    // Current labelling in y: x = 0 for all, so y_i = m_i.
+    // Supermodular pairs (coefficient a > 0) are bounded by linear terms exact at y0.
+    std::vector<std::pair<std::pair<std::size_t, std::size_t>, double> > submodular;
+    for(const auto& entry : pairwise)
+    {
+      const std::size_t i = entry.first.first, j = entry.first.second;
+      const double a = entry.second;
+      if(a <= 0)
+      {
+        if(a < 0)
+          submodular.push_back(entry);
+        continue;
+      }
+      const bool yi = m_mapping[i] != 0, yj = m_mapping[j] != 0;
+      if(yi == yj)
+      {
+        unary[i] += a / 2; // a yi yj <= a (yi + yj) / 2, exact at (0,0) and (1,1)
+        unary[j] += a / 2;
+      }
+      else if(yi)
+        unary[j] += a;     // a yi yj <= a yj, exact at yj = 0
+      else
+        unary[i] += a;     // a yi yj <= a yi, exact at yi = 0
+    }
+
+    // The s-t graph: node index = variable, then auxiliary nodes, then s and t.
+    using Traits = boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS>;
+    using Graph = boost::adjacency_list<
+      boost::vecS, boost::vecS, boost::directedS,
+      boost::property<boost::vertex_index_t, long,
+        boost::property<boost::vertex_color_t, boost::default_color_type,
+          boost::property<boost::vertex_distance_t, long,
+            boost::property<boost::vertex_predecessor_t, Traits::edge_descriptor> > > >,
+      boost::property<boost::edge_capacity_t, double,
+        boost::property<boost::edge_residual_capacity_t, double,
+          boost::property<boost::edge_reverse_t, Traits::edge_descriptor> > > >;
+
+    const std::size_t number_of_nodes = n + aux.size() + 2;
+    const std::size_t source = n + aux.size(), sink = source + 1;
+    Graph g(number_of_nodes);
+    auto capacity = get(boost::edge_capacity, g);
+    auto reverse = get(boost::edge_reverse, g);
+    auto add_edge_pair = [&](std::size_t u, std::size_t v, double c) {
+      if(!(c > 0))
+        return;
+      const auto e = boost::add_edge(u, v, g).first;
+      const auto r = boost::add_edge(v, u, g).first;
+      capacity[e] = c;
+      capacity[r] = 0;
+      reverse[e] = r;
+      reverse[r] = e;
+    };
+    std::vector<double> node_unary(number_of_nodes, 0.);
+    for(std::size_t i = 0; i < n; ++i)
+      node_unary[i] = unary[i];
+    // A node on the sink side has label 1. Pairwise a yi yj with a < 0: a yi + (-a) yi (1 - yj),
+    // an edge j -> i of capacity -a.
+    auto add_submodular_pair = [&](std::size_t i, std::size_t j, double a) {
+      node_unary[i] += a;
+      add_edge_pair(j, i, -a);
+    };
+    for(const auto& entry : submodular)
+      add_submodular_pair(entry.first.first, entry.first.second, entry.second);
+    for(std::size_t q = 0; q < aux.size(); ++q)
+    {
+      const std::size_t w = n + q;
+      node_unary[w] += aux[q].unary;
+      for(std::size_t v : aux[q].variables)
+        add_submodular_pair(w, v, aux[q].pairwise);
+    }
+    for(std::size_t i = 0; i < number_of_nodes - 2; ++i)
+    {
+      const double u = node_unary[i];
+      if(u > 0)
+        add_edge_pair(source, i, u);  // paid when i is on the sink side (label 1)
+      else if(u < 0)
+        add_edge_pair(i, sink, -u);   // paid when i is on the source side (label 0)
+    }
+
+    boost::boykov_kolmogorov_max_flow(g, source, sink);
+
+    auto color = get(boost::vertex_color, g);
+    std::vector<char> labels(n, 0);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const bool y = get(color, i) != boost::black_color; // black: source tree, label 0
+      labels[i] = static_cast<char>(y != (m_mapping[i] != 0)); // x = y xor m
+    }
+    return labels;
+  }
+
+  double m_constant = 0;
+  std::vector<double> m_unary;
+  std::vector<Term> m_terms;
+  std::vector<std::vector<std::size_t> > m_adjacent_terms;
+  std::vector<signed char> m_mapping;
+  std::size_t m_representable = 0;
+};
+
+} // namespace Graphcut_remeshing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_BINARY_GRAPH_CUT_H
