@@ -34,13 +34,32 @@ Vector_3d to_vector(const Point_3& p)
   return Vector_3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
 }
 
-// Angle at `apex` between the rays to `p` and `q`, in radians. atan2 of the cross and dot
-// products stays accurate near 0 and pi, where acos of a normalised dot product does not.
+// Angle between two vectors, in radians. atan2 of the cross and dot products stays accurate near
+// 0 and pi, where acos of a normalised dot product does not.
+inline double angle_between(const Vector_3d& u, const Vector_3d& v)
+{
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+// Angle at `apex` between the rays to `p` and `q`, in radians.
 inline double angle(const Vector_3d& apex, const Vector_3d& p, const Vector_3d& q)
 {
-  const Vector_3d u = p - apex;
-  const Vector_3d v = q - apex;
-  return std::atan2(u.cross(v).norm(), u.dot(v));
+  return angle_between(p - apex, q - apex);
+}
+
+// Twice the area vector of triangle (a, b, c): its direction is the triangle's normal.
+inline Vector_3d area_vector(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c)
+{
+  return (b - a).cross(c - a);
+}
+
+// Distance from p to the segment [a, b].
+inline double distance_to_segment(const Vector_3d& p, const Vector_3d& a, const Vector_3d& b)
+{
+  const Vector_3d ab = b - a;
+  const double l2 = ab.squaredNorm();
+  const double t = l2 > 0 ? (std::min)(1.0, (std::max)(0.0, (p - a).dot(ab) / l2)) : 0.0;
+  return (p - (a + t * ab)).norm();
 }
 
 // The three angles of triangle (a, b, c), at a, b and c, in radians.

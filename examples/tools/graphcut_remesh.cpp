@@ -1,0 +1,165 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// graphcut_remesh INPUT OUTPUT [options]: remeshes INPUT, writes OUTPUT, prints the before/after
+// quality table and the time.
+
+#include "tool_support.h"
+
+#include <CGAL/Polygon_mesh_processing/graphcut_isotropic_remeshing.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace GP = PMP::graphcut_parameters;
+namespace tools = graphcut_remeshing_tools;
+
+namespace {
+
+const char* const usage =
+  "usage: graphcut_remesh INPUT OUTPUT [options]\n"
+  "\n"
+  "Remeshes the triangle mesh INPUT (OFF, OBJ, PLY or STL) into nearly equilateral triangles that\n"
+  "stay close to the input surface, writes OUTPUT and prints the quality before and after.\n"
+  "\n"
+  "  --iterations N          non-greedy relocation iterations (default 150)\n"
+  "  --greedy-iterations N   final greedy iterations (default 20)\n"
+  "  --lambda-data X         weight of the data term, unit-box scale (default 1e7)\n"
+  "  --seed N                random seed; same input and seed, same output (default 0)\n"
+  "  --no-connectivity       relocate vertices only, never change the connectivity\n"
+  "  --quiet                 print nothing but errors\n"
+  "  --json FILE             write the quality figures, distances, time and energies as JSON\n"
+  "  --help                  print this help\n";
+
+template <typename T>
+bool parse_number(const std::string& text, T& value)
+{
+  try
+  {
+    std::size_t used = 0;
+    const double d = std::stod(text, &used);
+    if(used != text.size() || !std::isfinite(d) || d < 0)
+      return false;
+    value = static_cast<T>(d);
+    return double(value) == d || !std::is_integral<T>::value;
+  }
+  catch(const std::exception&)
+  {
+    return false;
+  }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::size_t iterations = 150, greedy_iterations = 20;
+  double lambda_data = 1e7;
+  unsigned int seed = 0;
+  bool quiet = false, connectivity = true;
+  std::string json_file;
+  std::vector<std::string> files;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&](auto& target) {
+      if(i + 1 >= argc || !parse_number(argv[i + 1], target))
+      {
+        std::cerr << "graphcut_remesh: " << arg << " needs a non-negative number\n";
+        std::exit(EXIT_FAILURE);
+      }
+      ++i;
+    };
+    if(arg == "--help" || arg == "-h")
+    {
+      std::cout << usage;
+      return EXIT_SUCCESS;
+    }
+    else if(arg == "--iterations") value(iterations);
+    else if(arg == "--greedy-iterations") value(greedy_iterations);
+    else if(arg == "--lambda-data") value(lambda_data);
+    else if(arg == "--seed") value(seed);
+    else if(arg == "--no-connectivity") connectivity = false;
+    else if(arg == "--quiet") quiet = true;
+    else if(arg == "--json")
+    {
+      if(i + 1 >= argc)
+      {
+        std::cerr << "graphcut_remesh: --json needs a file name\n";
+        return EXIT_FAILURE;
+      }
+      json_file = argv[++i];
+    }
+    else if(arg.size() > 1 && arg[0] == '-')
+    {
+      std::cerr << "graphcut_remesh: unknown option " << arg << " (see --help)\n";
+      return EXIT_FAILURE;
+    }
+    else
+      files.push_back(arg);
+  }
+  if(files.size() != 2)
+  {
+    std::cerr << "graphcut_remesh: expected INPUT and OUTPUT (see --help)\n" << usage;
+    return EXIT_FAILURE;
+  }
+
+  try
+  {
+    const tools::Mesh input = tools::read_mesh(files[0], true);
+    tools::Mesh mesh = input;
+
+    const auto start = std::chrono::steady_clock::now();
+    const PMP::Graphcut_remeshing_statistics stats = PMP::graphcut_isotropic_remeshing(
+      mesh, GP::combine(CGAL::parameters::number_of_iterations(iterations).random_seed(seed),
+                        GP::number_of_greedy_iterations(greedy_iterations), GP::lambda_data(lambda_data),
+                        GP::do_connectivity_optimization(connectivity)));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    if(!CGAL::IO::write_polygon_mesh(files[1], mesh, CGAL::parameters::stream_precision(17)))
+      throw tools::Input_error(files[1] + ": cannot write the output mesh");
+
+    const PMP::Mesh_quality_report before = PMP::mesh_quality_report(input);
+    const PMP::Mesh_quality_report after = PMP::mesh_quality_report(mesh);
+    const PMP::Relative_surface_distance distance = PMP::relative_surface_distance(input, mesh);
+    if(!quiet)
+    {
+      tools::write_table(std::cout, {"input", "output"}, {before, after}, &distance);
+      std::cout << "time (s)                  " << std::setw(32) << seconds << '\n';
+    }
+    if(!json_file.empty())
+    {
+      std::ofstream out(json_file);
+      out << "{\"input\": ";
+      tools::write_json(out, before);
+      out << ", \"output\": ";
+      tools::write_json(out, after);
+      out << ", \"distance\": ";
+      tools::write_json(out, distance);
+      out << ", \"seconds\": " << tools::json_number(seconds) << ", \"energy\": [";
+      for(std::size_t i = 0; i < stats.energies.size(); ++i)
+        out << (i ? ", " : "") << std::setprecision(17) << stats.energies[i];
+      out << "], \"iterations\": " << stats.number_of_iterations << ", \"moves\": " << stats.number_of_moves
+          << "}\n";
+      if(!out)
+        throw tools::Input_error(json_file + ": cannot write");
+    }
+  }
+  catch(const tools::Input_error& e)
+  {
+    std::cerr << "graphcut_remesh: " << e.what() << '\n';
+    return EXIT_FAILURE;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "graphcut_remesh: error: " << e.what() << '\n';
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}

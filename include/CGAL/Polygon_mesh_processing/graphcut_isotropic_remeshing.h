@@ -1,0 +1,259 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_GRAPHCUT_ISOTROPIC_REMESHING_H
+#define CGAL_POLYGON_MESH_PROCESSING_GRAPHCUT_ISOTROPIC_REMESHING_H
+
+#include <CGAL/Polygon_mesh_processing/graphcut_remeshing_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/normalization.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/remesher.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/assertions.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/property_map.h>
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+namespace Graphcut_remeshing {
+
+// The visitor used when none is given: never stops.
+struct Default_visitor
+{
+  bool operator()(const Graphcut_remeshing_progress&) const { return true; }
+};
+
+} // namespace Graphcut_remeshing
+} // namespace internal
+/// \endcond
+
+/*!
+ * \ingroup PkgGraphcutRemeshingRef
+ *
+ * remeshes a triangle mesh into nearly equilateral triangles while keeping it close to the input
+ * surface, by the global optimisation of Vidal et al.: at each iteration every vertex is offered
+ * one candidate position (smoothing or a guided random move within a freedom sphere that lowers
+ * its local energy) and one minimum s-t cut chooses, for all vertices at once, which candidates to
+ * take so that the energy of eq. (1), shape term plus data term, decreases. A first phase of
+ * `number_of_iterations` non-greedy iterations is followed by `number_of_greedy_iterations`
+ * iterations along the energy gradient. The input, scaled into the unit box, is kept as the
+ * reference surface; sharp edges (by the hysteresis of `sharp_angle_bounds`), border edges and
+ * user-constrained edges are features: their vertices slide along the feature polylines of the
+ * input, corners (three or more feature edges, or one) and constrained vertices do not move.
+ *
+ * The energy of eq. (1) never increases from one iteration to the next: the cut minimises an
+ * upper bound of the energy that is exact at the current positions. No move creates a degenerate
+ * triangle or turns a triangle over.
+ *
+ * The connectivity optimisation of section 3 (flips, splits, collapses and relaxation) is the
+ * subject of the next version of the package: this version relocates vertices only and leaves the
+ * connectivity unchanged, whatever `do_connectivity_optimization` says.
+ *
+ * @tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+ * @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters", which may
+ *         chain \cgal's and the package's with `graphcut_parameters::combine()`
+ *
+ * @param tmesh a triangle mesh, remeshed in place
+ * @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{a property map associating points to the vertices of `tmesh`}
+ *     \cgalParamType{a class model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+ *                    as key type and `%Point_3` as value type}
+ *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tmesh)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class; its points are built from
+ *                           `double` coordinates}
+ *     \cgalParamType{a class model of `Kernel`}
+ *     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{edge_is_constrained_map}
+ *     \cgalParamDescription{a property map telling which edges are user features: never flipped
+ *                           or collapsed; their vertices slide along them}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+ *                    as key type and `bool` as value type}
+ *     \cgalParamDefault{no edge is constrained}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_is_constrained_map}
+ *     \cgalParamDescription{a property map telling which vertices never move}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+ *                    as key type and `bool` as value type}
+ *     \cgalParamDefault{no vertex is constrained}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_iterations}
+ *     \cgalParamDescription{the number of iterations of the first, non-greedy phase}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{`150`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{random_seed}
+ *     \cgalParamDescription{the seed of the random candidates; the same input and seed give the
+ *                           same output}
+ *     \cgalParamType{`unsigned int`}
+ *     \cgalParamDefault{`0`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::lambda_shape}
+ *     \cgalParamDescription{the weight of the shape term (circumradius over shortest edge)}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{`1`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::lambda_data}
+ *     \cgalParamDescription{the weight of the data term (approximate squared distance to the
+ *                           input surface, in the unit box)}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{`1e7`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::number_of_greedy_iterations}
+ *     \cgalParamDescription{the number of iterations of the final greedy phase}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{`20`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::sharp_angle_bounds}
+ *     \cgalParamDescription{the dihedral angles theta_false and theta_true (degrees) of the
+ *                           sharp-edge hysteresis}
+ *     \cgalParamType{`std::pair<double, double>`}
+ *     \cgalParamDefault{`(20, 35)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::initial_temperature}
+ *     \cgalParamDescription{T(1) of the cooling schedule of the freedom sphere}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{`10`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::cooling_factor}
+ *     \cgalParamDescription{K of the cooling schedule T(i) = T(1) K^(i-1)}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{`0.95`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::smoothing_step}
+ *     \cgalParamDescription{the factor of the smoothing candidates' displacements}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{`0.06`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::visitor}
+ *     \cgalParamDescription{called after each iteration with a `Graphcut_remeshing_progress`;
+ *                           returning `false` stops the run, leaving a valid mesh}
+ *     \cgalParamType{a callable `bool(const Graphcut_remeshing_progress&)`}
+ *     \cgalParamDefault{a visitor that never stops}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::do_connectivity_optimization}
+ *     \cgalParamDescription{whether to run the connectivity optimisation (not yet part of this
+ *                           version, which never changes the connectivity)}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \return the energies before and after each iteration, and counts
+ *
+ * \pre `CGAL::is_triangle_mesh(tmesh)`
+ */
+template <typename TriangleMesh,
+          typename NamedParameters = parameters::Default_named_parameters>
+Graphcut_remeshing_statistics
+graphcut_isotropic_remeshing(TriangleMesh& tmesh,
+                             const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  namespace GR = internal::Graphcut_remeshing;
+  namespace GNP = graphcut_internal_np;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using edge_descriptor = typename boost::graph_traits<TriangleMesh>::edge_descriptor;
+
+  CGAL_precondition(CGAL::is_triangle_mesh(tmesh));
+
+  // Named parameters to plain values.
+  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+                              get_property_map(CGAL::vertex_point, tmesh));
+  using GT = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
+  using Point = typename GT::Point_3;
+  auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
+                              Static_boolean_property_map<edge_descriptor, false>());
+  auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
+                              Static_boolean_property_map<vertex_descriptor, false>());
+  GR::Remeshing_options options;
+  options.number_of_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), std::size_t(150));
+  options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
+  options.weights.lambda_shape = choose_parameter(get_parameter(np, GNP::lambda_shape), 1.0);
+  options.weights.lambda_data = choose_parameter(get_parameter(np, GNP::lambda_data), 1e7);
+  options.number_of_greedy_iterations =
+    choose_parameter(get_parameter(np, GNP::number_of_greedy_iterations), std::size_t(20));
+  options.initial_temperature = choose_parameter(get_parameter(np, GNP::initial_temperature), 10.0);
+  options.cooling_factor = choose_parameter(get_parameter(np, GNP::cooling_factor), 0.95);
+  options.smoothing_step = choose_parameter(get_parameter(np, GNP::smoothing_step), 0.06);
+  const std::pair<double, double> sharp_bounds =
+    choose_parameter(get_parameter(np, GNP::sharp_angle_bounds), std::make_pair(20.0, 35.0));
+  auto visitor = choose_parameter(get_parameter(np, GNP::visitor), GR::Default_visitor());
+
+  // The working copy, scaled into the unit box, with its vertices in the order of `tmesh`'s.
+  std::vector<vertex_descriptor> input_vertices;
+  std::vector<GR::Vector_3d> input_points;
+  for(vertex_descriptor v : vertices(tmesh))
+  {
+    input_vertices.push_back(v);
+    input_points.push_back(GR::to_vector(get(vpm, v)));
+  }
+  const GR::Unit_box_normalization normalization(input_points);
+  GR::Work_mesh work;
+  const auto vertex_index = CGAL::get_initialized_vertex_index_map(tmesh, np);
+  std::vector<GR::Work_mesh::Vertex_index> work_vertex(input_vertices.size());
+  auto to_work = [&](vertex_descriptor v) { return work_vertex[get(vertex_index, v)]; };
+  std::vector<char> constrained_vertex;
+  for(std::size_t i = 0; i < input_vertices.size(); ++i)
+  {
+    const GR::Vector_3d p = normalization.to_unit(input_points[i]);
+    work_vertex[get(vertex_index, input_vertices[i])] = work.add_vertex(GR::Work_kernel::Point_3(p.x(), p.y(), p.z()));
+    constrained_vertex.push_back(get(vcm, input_vertices[i]) ? 1 : 0);
+  }
+  for(auto f : faces(tmesh))
+  {
+    const auto h = halfedge(f, tmesh);
+    work.add_face(to_work(source(h, tmesh)), to_work(target(h, tmesh)), to_work(target(next(h, tmesh), tmesh)));
+  }
+
+  // Features: sharp edges of the input, border edges, user-constrained edges.
+  std::vector<char> feature_edge = GR::detect_sharp_edges(work, sharp_bounds.first, sharp_bounds.second);
+  for(auto e : work.edges())
+    if(work.is_border(e))
+      feature_edge[std::size_t(e)] = 1;
+  for(edge_descriptor e : edges(tmesh))
+    if(get(ecm, e))
+    {
+      const auto h = halfedge(e, tmesh);
+      const auto wh = work.halfedge(to_work(source(h, tmesh)), to_work(target(h, tmesh)));
+      feature_edge[std::size_t(work.edge(wh))] = 1;
+    }
+  std::vector<GR::Vertex_kind> kind = GR::classify_vertices(work, feature_edge, constrained_vertex);
+
+  GR::Graphcut_remesher remesher(work, feature_edge, kind, options);
+  Graphcut_remeshing_statistics stats = remesher.run(visitor);
+
+  // Back to the input's scale. Vertices that never moved keep their exact input coordinates.
+  for(std::size_t i = 0; i < input_vertices.size(); ++i)
+  {
+    const auto w = to_work(input_vertices[i]);
+    const GR::Vector_3d unit = GR::to_vector(work.point(w));
+    if(unit == normalization.to_unit(input_points[i]))
+      continue;
+    const GR::Vector_3d p = normalization.from_unit(unit);
+    put(vpm, input_vertices[i], Point(p.x(), p.y(), p.z()));
+  }
+  return stats;
+}
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_MESH_PROCESSING_GRAPHCUT_ISOTROPIC_REMESHING_H

@@ -1,0 +1,166 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_GRAPHCUT_REMESHING_PARAMETERS_H
+#define CGAL_POLYGON_MESH_PROCESSING_GRAPHCUT_REMESHING_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+
+/// \cond SKIP_IN_MANUAL
+// The tags of the package's own named parameters (CGAL 5.5 offers no way to add to
+// `CGAL::parameters`, whose lookup works with any tag type).
+namespace graphcut_internal_np {
+enum lambda_shape_t { lambda_shape };
+enum lambda_data_t { lambda_data };
+enum number_of_greedy_iterations_t { number_of_greedy_iterations };
+enum connectivity_period_t { connectivity_period };
+enum sharp_angle_bounds_t { sharp_angle_bounds };
+enum initial_temperature_t { initial_temperature };
+enum cooling_factor_t { cooling_factor };
+enum smoothing_step_t { smoothing_step };
+enum visitor_t { visitor };
+enum do_connectivity_optimization_t { do_connectivity_optimization };
+} // namespace graphcut_internal_np
+/// \endcond
+
+/*!
+ * \ingroup PkgGraphcutRemeshingRef
+ *
+ * What a visitor of `graphcut_isotropic_remeshing()` is told after each iteration.
+ */
+struct Graphcut_remeshing_progress
+{
+  /// the two calls of the paper's Algorithm 1
+  enum Phase
+  {
+    RELOCATION,    ///< the non-greedy phase
+    GREEDY_FITTING ///< the final greedy phase
+  };
+  /// the current phase
+  Phase phase = RELOCATION;
+  /// the iteration just done in this phase, from 1
+  std::size_t iteration = 0;
+  /// the number of iterations of this phase
+  std::size_t number_of_iterations = 0;
+  /// the energy of eq. (1) after the iteration, in the unit-box scale the method works in
+  double energy = 0;
+};
+
+/*!
+ * \ingroup PkgGraphcutRemeshingRef
+ *
+ * What `graphcut_isotropic_remeshing()` returns.
+ */
+struct Graphcut_remeshing_statistics
+{
+  /// the energy of eq. (1) before the first iteration, then after each iteration
+  std::vector<double> energies;
+  /// the number of iterations done, both phases together
+  std::size_t number_of_iterations = 0;
+  /// the number of vertex moves taken by the graph cuts, all iterations together
+  std::size_t number_of_moves = 0;
+  /// `true` if the visitor stopped the run
+  bool cancelled = false;
+};
+
+/*!
+ * \ingroup PkgGraphcutRemeshingRef
+ *
+ * The named parameters of the package. They are built like \cgal's own (each function returns a
+ * one-element pack) and chained with \cgal's by `combine()`:
+ *
+ * \code
+ * namespace PMP = CGAL::Polygon_mesh_processing;
+ * namespace GP = PMP::graphcut_parameters;
+ * PMP::graphcut_isotropic_remeshing(mesh,
+ *     GP::combine(CGAL::parameters::number_of_iterations(100).random_seed(3),
+ *                 GP::lambda_data(1e6), GP::number_of_greedy_iterations(10)));
+ * \endcode
+ */
+namespace graphcut_parameters {
+
+/// \cond SKIP_IN_MANUAL
+#define CGAL_GRAPHCUT_REMESHING_PARAMETER(NAME)                                                      \
+  template <typename T>                                                                              \
+  Named_function_parameters<T, graphcut_internal_np::NAME##_t> NAME(const T& value)                  \
+  {                                                                                                  \
+    return Named_function_parameters<T, graphcut_internal_np::NAME##_t>(value);                      \
+  }
+/// \endcond
+
+/// weight of the shape term of eq. (1); default `1`
+CGAL_GRAPHCUT_REMESHING_PARAMETER(lambda_shape)
+/// weight of the data term of eq. (1), for a mesh scaled into the unit box; default `1e7`
+CGAL_GRAPHCUT_REMESHING_PARAMETER(lambda_data)
+/// number of greedy (gradient) iterations after the relocation phase; default `20`
+CGAL_GRAPHCUT_REMESHING_PARAMETER(number_of_greedy_iterations)
+/// number of relocation iterations between two connectivity passes; default `5`
+CGAL_GRAPHCUT_REMESHING_PARAMETER(connectivity_period)
+/// `std::pair<double, double>`: the dihedral angles (degrees) of eq. (8); default `(20, 35)`
+CGAL_GRAPHCUT_REMESHING_PARAMETER(sharp_angle_bounds)
+/// T(1) of the cooling schedule of eq. (5); default `10`
+CGAL_GRAPHCUT_REMESHING_PARAMETER(initial_temperature)
+/// K of the cooling schedule T(i) = T(1) K^(i-1); default `0.95`
+CGAL_GRAPHCUT_REMESHING_PARAMETER(cooling_factor)
+/// the factor gamma of the smoothing candidates' displacements; default `0.06`
+CGAL_GRAPHCUT_REMESHING_PARAMETER(smoothing_step)
+/// a visitor called after each iteration, see `graphcut_isotropic_remeshing()`
+CGAL_GRAPHCUT_REMESHING_PARAMETER(visitor)
+/// `bool`: whether to run the connectivity optimisation of section 3; default `true`
+CGAL_GRAPHCUT_REMESHING_PARAMETER(do_connectivity_optimization)
+
+#undef CGAL_GRAPHCUT_REMESHING_PARAMETER
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+template <typename NP2>
+const NP2& chain(const Named_function_parameters<bool, CGAL::internal_np::all_default_t>&, const NP2& rest)
+{
+  return rest;
+}
+
+template <typename T, typename Tag, typename NP2>
+Named_function_parameters<T, Tag, NP2>
+chain(const Named_function_parameters<T, Tag, CGAL::internal_np::No_property>& first, const NP2& rest)
+{
+  return Named_function_parameters<T, Tag, NP2>(first.v, rest);
+}
+
+template <typename T, typename Tag, typename Base, typename NP2>
+auto chain(const Named_function_parameters<T, Tag, Base>& first, const NP2& rest)
+{
+  auto tail = chain(static_cast<const Base&>(first), rest);
+  return Named_function_parameters<T, Tag, decltype(tail)>(first.v, tail);
+}
+
+} // namespace internal
+/// \endcond
+
+/// chains packs of named parameters (\cgal's and the package's) into one
+template <typename NP>
+const NP& combine(const NP& np)
+{
+  return np;
+}
+
+/// chains packs of named parameters (\cgal's and the package's) into one
+template <typename NP1, typename NP2, typename... NPs>
+auto combine(const NP1& np1, const NP2& np2, const NPs&... nps)
+{
+  return internal::chain(np1, combine(np2, nps...));
+}
+
+} // namespace graphcut_parameters
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_MESH_PROCESSING_GRAPHCUT_REMESHING_PARAMETERS_H

@@ -1,0 +1,233 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Sharp features (section 4.2): hysteresis detection of sharp edges, the kind of each vertex
+// (free, sliding on a feature polyline, fixed), and sliding along the reference polylines.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_FEATURES_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_FEATURES_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Graphcut_remeshing {
+
+// Angle between the normals of the two faces of an edge, in degrees (0 where flat); 0 for a
+// border edge.
+template <typename Mesh>
+double dihedral_angle(const Mesh& m, typename Mesh::Edge_index e)
+{
+  const auto h = m.halfedge(e), o = m.opposite(h);
+  if(m.is_border(h) || m.is_border(o))
+    return 0;
+  auto normal = [&m](typename Mesh::Halfedge_index g) {
+    return area_vector(to_vector(m.point(m.source(g))), to_vector(m.point(m.target(g))),
+                       to_vector(m.point(m.target(m.next(g)))));
+  };
+  return to_degrees(angle_between(normal(h), normal(o)));
+}
+
+// eq. (8): sharp above theta_true, not sharp below theta_false, and in between sharp only when at
+// least two edges sharing an end point with it are above theta_true. Indexed by edge index.
+template <typename Mesh>
+std::vector<char> detect_sharp_edges(const Mesh& m, double theta_false, double theta_true)
+{
+  std::vector<double> theta(m.number_of_edges(), 0.);
+  for(auto e : m.edges())
+    theta[std::size_t(e)] = dihedral_angle(m, e);
+  std::vector<char> sharp(m.number_of_edges(), 0);
+  for(auto e : m.edges())
+  {
+    const double t = theta[std::size_t(e)];
+    if(t > theta_true)
+      sharp[std::size_t(e)] = 1;
+    else if(t >= theta_false)
+    {
+      int strong = 0;
+      const auto h = m.halfedge(e);
+      for(auto end : {h, m.opposite(h)})
+        for(auto g : halfedges_around_target(end, m))
+          if(m.edge(g) != e && theta[std::size_t(m.edge(g))] > theta_true)
+            ++strong;
+      sharp[std::size_t(e)] = strong >= 2 ? 1 : 0;
+    }
+  }
+  return sharp;
+}
+
+enum class Vertex_kind : char
+{
+  free_vertex,    // moves on the surface
+  feature_vertex, // slides along its feature polyline (exactly two feature edges)
+  fixed_vertex    // never moves: corners (three or more feature edges), feature ends, user constraints
+};
+
+template <typename Mesh>
+std::vector<Vertex_kind> classify_vertices(const Mesh& m, const std::vector<char>& feature_edge,
+                                           const std::vector<char>& constrained_vertex)
+{
+  std::vector<Vertex_kind> kind(m.number_of_vertices(), Vertex_kind::free_vertex);
+  for(auto v : m.vertices())
+  {
+    int count = 0;
+    if(m.halfedge(v) != Mesh::null_halfedge())
+      for(auto h : halfedges_around_target(m.halfedge(v), m))
+        count += feature_edge[std::size_t(m.edge(h))] ? 1 : 0;
+    if(constrained_vertex[std::size_t(v)] || (count != 0 && count != 2) ||
+       m.halfedge(v) == Mesh::null_halfedge())
+      kind[std::size_t(v)] = Vertex_kind::fixed_vertex;
+    else if(count == 2)
+      kind[std::size_t(v)] = Vertex_kind::feature_vertex;
+  }
+  return kind;
+}
+
+// The feature polylines of the reference mesh, and positions on them: a point at parameter t of
+// a feature halfedge, from its source (t = 0) to its target (t = 1).
+template <typename Mesh>
+class Feature_polylines
+{
+public:
+  using Halfedge = typename Mesh::Halfedge_index;
+  using Vertex = typename Mesh::Vertex_index;
+
+  struct Location
+  {
+    Halfedge h;
+    double t = 0;
+  };
+
+  Feature_polylines(const Mesh& reference, const std::vector<char>& feature_edge,
+                    const std::vector<Vertex_kind>& kind)
+    : m_mesh(reference), m_feature(feature_edge), m_kind(kind)
+  {}
+
+  bool is_feature(Halfedge h) const { return m_feature[std::size_t(m_mesh.edge(h))] != 0; }
+
+  // The location of a reference vertex on a feature polyline.
+  Location at_vertex(Vertex v) const
+  {
+    for(auto h : halfedges_around_source(m_mesh.halfedge(v), m_mesh))
+      if(is_feature(h))
+        return Location{h, 0.};
+    return Location{m_mesh.halfedge(v), 0.};
+  }
+
+  Vector_3d point(const Location& l) const
+  {
+    const Vector_3d a = to_vector(m_mesh.point(m_mesh.source(l.h)));
+    const Vector_3d b = to_vector(m_mesh.point(m_mesh.target(l.h)));
+    return (1 - l.t) * a + l.t * b;
+  }
+
+  // The reference vertex nearest to the location along its segment.
+  Vertex nearest_vertex(const Location& l) const
+  {
+    return l.t < 0.5 ? m_mesh.source(l.h) : m_mesh.target(l.h);
+  }
+
+  // A unit tangent of the polyline at the location (at a polyline vertex, the direction that
+  // bisects the way in and the way out).
+  Vector_3d tangent(const Location& l) const
+  {
+    const Vector_3d u = direction(l.h);
+    if(l.t > 0 && l.t < 1)
+      return u;
+    const Vertex v = l.t <= 0 ? m_mesh.source(l.h) : m_mesh.target(l.h);
+    std::array<Vector_3d, 2> out{{Vector_3d::Zero(), Vector_3d::Zero()}};
+    int n = 0;
+    for(auto g : halfedges_around_source(m_mesh.halfedge(v), m_mesh))
+      if(is_feature(g) && n < 2)
+        out[n++] = direction(g);
+    const Vector_3d t = n == 2 ? Vector_3d(out[0] - out[1]) : out[0];
+    return t.norm() > 0 ? Vector_3d(t.normalized()) : u;
+  }
+
+  // Slides from `l` along the polyline in the way `displacement` points, by the length of its
+  // component along the polyline; stops at polyline ends and at fixed reference vertices.
+  Location move(Location l, const Vector_3d& displacement) const
+  {
+    // Start on a segment that leaves the current point in the wanted way.
+    if(l.t <= 0 || l.t >= 1)
+    {
+      const Vertex v = l.t <= 0 ? m_mesh.source(l.h) : m_mesh.target(l.h);
+      Halfedge best = l.h;
+      double best_dot = 0;
+      for(auto g : halfedges_around_source(m_mesh.halfedge(v), m_mesh))
+        if(is_feature(g))
+        {
+          const double d = direction(g).dot(displacement);
+          if(d > best_dot)
+          {
+            best_dot = d;
+            best = g;
+          }
+        }
+      if(!(best_dot > 0))
+        return l;
+      l = Location{best, 0.};
+    }
+    else if(direction(l.h).dot(displacement) < 0)
+      l = Location{m_mesh.opposite(l.h), 1 - l.t};
+
+    double remaining = std::abs(direction(l.h).dot(displacement));
+    for(std::size_t guard = 0; guard < m_mesh.number_of_halfedges(); ++guard)
+    {
+      const double length = segment_length(l.h);
+      const double available = (1 - l.t) * length;
+      if(remaining < available)
+      {
+        l.t += remaining / length;
+        return l;
+      }
+      remaining -= available;
+      const Vertex v = m_mesh.target(l.h);
+      l.t = 1;
+      if(m_kind[std::size_t(v)] != Vertex_kind::feature_vertex || !(remaining > 0))
+        return l;
+      // Continue on the other feature edge of v.
+      Halfedge next_h = l.h;
+      for(auto g : halfedges_around_source(m_mesh.halfedge(v), m_mesh))
+        if(is_feature(g) && g != m_mesh.opposite(l.h))
+          next_h = g;
+      if(next_h == l.h)
+        return l;
+      l = Location{next_h, 0.};
+    }
+    return l;
+  }
+
+private:
+  Vector_3d direction(Halfedge h) const
+  {
+    const Vector_3d d = to_vector(m_mesh.point(m_mesh.target(h))) - to_vector(m_mesh.point(m_mesh.source(h)));
+    const double n = d.norm();
+    return n > 0 ? Vector_3d(d / n) : Vector_3d::Zero();
+  }
+
+  double segment_length(Halfedge h) const
+  {
+    return (to_vector(m_mesh.point(m_mesh.target(h))) - to_vector(m_mesh.point(m_mesh.source(h)))).norm();
+  }
+
+  const Mesh& m_mesh;
+  const std::vector<char>& m_feature;
+  const std::vector<Vertex_kind>& m_kind;
+};
+
+} // namespace Graphcut_remeshing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_FEATURES_H

@@ -1,0 +1,165 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The reference surface (section 2): an unchanged copy of the input with, per vertex, the frame of
+// eq. (4) from jet fitting, and the closest-reference-vertex tracking by local search.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_REFERENCE_SURFACE_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_REFERENCE_SURFACE_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
+
+#include <CGAL/Monge_via_jet_fitting.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Graphcut_remeshing {
+
+template <typename Mesh>
+class Reference_surface
+{
+public:
+  using Vertex = typename Mesh::Vertex_index;
+
+  explicit Reference_surface(const Mesh& m) : m_mesh(m) { compute_frames(); }
+
+  const Mesh& mesh() const { return m_mesh; }
+  const Local_frame& frame(Vertex v) const { return m_frames[std::size_t(v)]; }
+  Vector_3d point(Vertex v) const { return to_vector(m_mesh.point(v)); }
+
+  // Local search of section 2.1: from `start`, move to a neighbour closer to x while there is one.
+  Vertex closest_vertex(const Vector_3d& x, Vertex start) const
+  {
+    Vertex current = start;
+    double best = (point(current) - x).squaredNorm();
+    for(bool improved = true; improved;)
+    {
+      improved = false;
+      const auto h0 = m_mesh.halfedge(current);
+      if(h0 == Mesh::null_halfedge())
+        break;
+      for(auto h : halfedges_around_target(h0, m_mesh))
+      {
+        const Vertex w = m_mesh.source(h);
+        const double d = (point(w) - x).squaredNorm();
+        if(d < best)
+        {
+          best = d;
+          current = w;
+          improved = true;
+        }
+      }
+    }
+    return current;
+  }
+
+  // Area-weighted vertex normal (unit, or zero for an isolated vertex).
+  Vector_3d area_weighted_normal(Vertex v) const
+  {
+    Vector_3d n = Vector_3d::Zero();
+    const auto h0 = m_mesh.halfedge(v);
+    if(h0 == Mesh::null_halfedge())
+      return n;
+    for(auto h : halfedges_around_target(h0, m_mesh))
+      if(!m_mesh.is_border(h))
+        n += area_vector(point(m_mesh.target(h)), point(m_mesh.target(m_mesh.next(h))),
+                         point(m_mesh.source(h)));
+    return n.norm() > 0 ? Vector_3d(n.normalized()) : n;
+  }
+
+private:
+  // Principal curvatures, directions and normal from a degree-2 jet fitted to the 2-ring (a wider
+  // ring where the 2-ring has fewer than the six points a quadric needs), oriented like the
+  // area-weighted normal. Where no quadric can be fitted the frame is flat.
+  void compute_frames()
+  {
+    using K = CGAL::Simple_cartesian<double>;
+    using Fitting = CGAL::Monge_via_jet_fitting<K>;
+    m_frames.assign(m_mesh.number_of_vertices(), Local_frame());
+    std::vector<char> seen(m_mesh.number_of_vertices(), 0);
+    std::vector<Vertex> ring, frontier, next_frontier;
+    std::vector<K::Point_3> points;
+    for(Vertex v : m_mesh.vertices())
+    {
+      Local_frame& f = m_frames[std::size_t(v)];
+      f.origin = point(v);
+      const Vector_3d n = area_weighted_normal(v);
+      if(n.norm() > 0)
+      {
+        f.normal = n;
+        f.d1 = n.unitOrthogonal();
+        f.d2 = n.cross(f.d1);
+      }
+      if(m_mesh.halfedge(v) == Mesh::null_halfedge())
+        continue;
+
+      ring.assign(1, v);
+      frontier.assign(1, v);
+      seen[std::size_t(v)] = 1;
+      for(int depth = 0; depth < 4 && !frontier.empty() && (depth < 2 || ring.size() < 6); ++depth)
+      {
+        next_frontier.clear();
+        for(Vertex u : frontier)
+          for(auto h : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+          {
+            const Vertex w = m_mesh.source(h);
+            if(!seen[std::size_t(w)])
+            {
+              seen[std::size_t(w)] = 1;
+              ring.push_back(w);
+              next_frontier.push_back(w);
+            }
+          }
+        frontier.swap(next_frontier);
+      }
+      for(Vertex u : ring)
+        seen[std::size_t(u)] = 0;
+      if(ring.size() < 6 || !(n.norm() > 0))
+        continue;
+
+      points.clear();
+      for(Vertex u : ring)
+        points.push_back(m_mesh.point(u));
+      Fitting fitting;
+      typename Fitting::Monge_form form = fitting(points.begin(), points.end(), 2, 2);
+      form.comply_wrt_given_normal(K::Vector_3(n.x(), n.y(), n.z()));
+      const K::Vector_3 d1 = form.maximal_principal_direction(), d2 = form.minimal_principal_direction();
+      const K::Vector_3 normal = form.normal_direction();
+      const double k1 = form.principal_curvatures(0), k2 = form.principal_curvatures(1);
+      if(!std::isfinite(k1) || !std::isfinite(k2))
+        continue;
+      f.normal = Vector_3d(normal.x(), normal.y(), normal.z()).normalized();
+      f.d1 = Vector_3d(d1.x(), d1.y(), d1.z()).normalized();
+      f.d2 = Vector_3d(d2.x(), d2.y(), d2.z()).normalized();
+      // Keep d1 along the curvature of larger magnitude.
+      if(std::abs(k2) > std::abs(k1))
+      {
+        std::swap(f.d1, f.d2);
+        f.k1 = k2;
+        f.k2 = k1;
+      }
+      else
+      {
+        f.k1 = k1;
+        f.k2 = k2;
+      }
+    }
+  }
+
+  const Mesh& m_mesh;
+  std::vector<Local_frame> m_frames;
+};
+
+} // namespace Graphcut_remeshing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_REFERENCE_SURFACE_H
