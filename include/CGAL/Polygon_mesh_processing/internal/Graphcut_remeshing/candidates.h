@@ -74,12 +74,6 @@ Vector_3d laplacian_target(const Vector_3d& x, const PointRange& ring)
   return count > 0 ? Vector_3d(sum / count) : x;
 }
 
-// The component of v in the plane of unit normal n.
-inline Vector_3d tangential(const Vector_3d& v, const Vector_3d& n)
-{
-  return v - v.dot(n) * n;
-}
-
 // eq. (5): sigma = 0.5 / (1 + exp(-T)) * ring radius * min(1, rho).
 inline double freedom_radius(double temperature, double ring_radius, double min_curvature_radius)
 {

@@ -14,7 +14,9 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <array>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -58,6 +60,59 @@ public:
       }
     }
     return current;
+  }
+
+  // The frame of eq. (4) at the point of the reference triangles around `near` (those incident to
+  // it and to its neighbours) closest to x: there the normal is the triangle's, and the principal
+  // directions and curvatures are interpolated from the triangle's vertices. When the closest
+  // point is inside a triangle, x - origin is along the normal and eq. (4) is the exact squared
+  // distance to the reference triangles.
+  Local_frame frame_at_closest_point(const Vector_3d& x, Vertex near) const
+  {
+    double best = std::numeric_limits<double>::infinity();
+    Local_frame result = frame(near);
+    const auto h0 = m_mesh.halfedge(near);
+    if(h0 == Mesh::null_halfedge())
+      return result;
+    auto visit_faces_around = [&](Vertex u) {
+      for(auto h : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+      {
+        if(m_mesh.is_border(h))
+          continue;
+        const std::array<Vertex, 3> t{{m_mesh.source(h), m_mesh.target(h), m_mesh.target(m_mesh.next(h))}};
+        const std::array<Vector_3d, 3> p{{point(t[0]), point(t[1]), point(t[2])}};
+        std::array<double, 3> w;
+        const Vector_3d c = closest_point_on_triangle(x, p[0], p[1], p[2], w);
+        const double d = (x - c).squaredNorm();
+        if(d >= best)
+          continue;
+        const Vector_3d n = area_vector(p[0], p[1], p[2]);
+        if(!(n.norm() > 0))
+          continue;
+        best = d;
+        result.origin = c;
+        result.normal = n.normalized();
+        Vector_3d d1 = Vector_3d::Zero();
+        result.k1 = result.k2 = 0;
+        for(int i = 0; i < 3; ++i)
+        {
+          const Local_frame& fi = frame(t[i]);
+          // Principal directions are defined up to sign: align them before averaging.
+          d1 += w[i] * (fi.d1.dot(frame(t[0]).d1) < 0 ? Vector_3d(-fi.d1) : fi.d1);
+          result.k1 += w[i] * fi.k1;
+          result.k2 += w[i] * fi.k2;
+        }
+        d1 = tangential(d1, result.normal);
+        if(!(d1.norm() > 1e-12))
+          d1 = result.normal.unitOrthogonal();
+        result.d1 = d1.normalized();
+        result.d2 = result.normal.cross(result.d1);
+      }
+    };
+    visit_faces_around(near);
+    for(auto h : halfedges_around_target(h0, m_mesh))
+      visit_faces_around(m_mesh.source(h));
+    return result;
   }
 
   // Area-weighted vertex normal (unit, or zero for an isolated vertex).

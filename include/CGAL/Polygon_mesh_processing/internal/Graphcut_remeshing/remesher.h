@@ -222,8 +222,13 @@ private:
   {
     if(kind_of(v) != Vertex_kind::free_vertex)
       return 0;
-    return m_options.weights.lambda_data *
-           squared_distance_approximation(x, m_reference.frame(m_closest[std::size_t(v)]),
+    return m_options.weights.lambda_data * squared_distance(x, m_closest[std::size_t(v)]);
+  }
+
+  // F of eq. (4) in the frame at the closest point of the reference triangles around `near`.
+  double squared_distance(const Vector_3d& x, Vertex near) const
+  {
+    return squared_distance_approximation(x, m_reference.frame_at_closest_point(x, near),
                                           m_options.weights.epsilon);
   }
 
@@ -251,9 +256,7 @@ private:
       const Vertex new_ref = m_reference.closest_vertex(x, old_ref);
       if(new_ref == old_ref)
         continue;
-      const double eps = m_options.weights.epsilon;
-      if(squared_distance_approximation(x, m_reference.frame(new_ref), eps) <=
-         squared_distance_approximation(x, m_reference.frame(old_ref), eps))
+      if(squared_distance(x, new_ref) <= squared_distance(x, old_ref))
         m_closest[std::size_t(v)] = new_ref;
     }
   }

@@ -53,6 +53,12 @@ inline Vector_3d area_vector(const Vector_3d& a, const Vector_3d& b, const Vecto
   return (b - a).cross(c - a);
 }
 
+// The component of v in the plane of unit normal n.
+inline Vector_3d tangential(const Vector_3d& v, const Vector_3d& n)
+{
+  return v - v.dot(n) * n;
+}
+
 // Distance from p to the segment [a, b].
 inline double distance_to_segment(const Vector_3d& p, const Vector_3d& a, const Vector_3d& b)
 {
@@ -67,6 +73,48 @@ inline std::array<double, 3> triangle_angles(const Vector_3d& a, const Vector_3d
                                              const Vector_3d& c)
 {
   return {{angle(a, b, c), angle(b, c, a), angle(c, a, b)}};
+}
+
+// The point of triangle (a, b, c) closest to p, with its barycentric coordinates (Voronoi regions
+// of the vertices, then of the edges, then the interior).
+inline Vector_3d closest_point_on_triangle(const Vector_3d& p, const Vector_3d& a, const Vector_3d& b,
+                                           const Vector_3d& c, std::array<double, 3>& barycentric)
+{
+  const Vector_3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if(d1 <= 0 && d2 <= 0) { barycentric = {{1, 0, 0}}; return a; }
+  const Vector_3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if(d3 >= 0 && d4 <= d3) { barycentric = {{0, 1, 0}}; return b; }
+  const double vc = d1 * d4 - d3 * d2;
+  if(vc <= 0 && d1 >= 0 && d3 <= 0)
+  {
+    const double t = d1 / (d1 - d3);
+    barycentric = {{1 - t, t, 0}};
+    return a + t * ab;
+  }
+  const Vector_3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if(d6 >= 0 && d5 <= d6) { barycentric = {{0, 0, 1}}; return c; }
+  const double vb = d5 * d2 - d1 * d6;
+  if(vb <= 0 && d2 >= 0 && d6 <= 0)
+  {
+    const double t = d2 / (d2 - d6);
+    barycentric = {{1 - t, 0, t}};
+    return a + t * ac;
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if(va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+  {
+    const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    barycentric = {{0, 1 - t, t}};
+    return b + t * (c - b);
+  }
+  const double denominator = va + vb + vc;
+  if(!(denominator > 0)) { barycentric = {{1, 0, 0}}; return a; } // degenerate triangle
+  const double v = vb / denominator, w = vc / denominator;
+  barycentric = {{1 - v - w, v, w}};
+  return a + v * ab + w * ac;
 }
 
 } // namespace Graphcut_remeshing
