@@ -114,6 +114,13 @@ struct Default_visitor
  *     \cgalParamType{`double`}
  *     \cgalParamDefault{`1e7`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::face_data_weight}
+ *     \cgalParamDescription{beyond the paper: the weight, relative to `lambda_data`, of a data term
+ *                           at each triangle's centroid, which keeps triangles from cutting chords
+ *                           through curved parts of the input; `0` gives the paper's energy}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{`0.05`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{graphcut_parameters::number_of_greedy_iterations}
  *     \cgalParamDescription{the number of iterations of the final greedy phase}
  *     \cgalParamType{`std::size_t`}
@@ -188,6 +195,7 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
   options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
   options.weights.lambda_shape = choose_parameter(get_parameter(np, GNP::lambda_shape), 1.0);
   options.weights.lambda_data = choose_parameter(get_parameter(np, GNP::lambda_data), 1e7);
+  options.weights.face_data_weight = choose_parameter(get_parameter(np, GNP::face_data_weight), 0.05);
   options.number_of_greedy_iterations =
     choose_parameter(get_parameter(np, GNP::number_of_greedy_iterations), std::size_t(20));
   options.initial_temperature = choose_parameter(get_parameter(np, GNP::initial_temperature), 10.0);

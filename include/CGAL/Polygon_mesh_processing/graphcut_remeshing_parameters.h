@@ -19,6 +19,7 @@ namespace Polygon_mesh_processing {
 namespace graphcut_internal_np {
 enum lambda_shape_t { lambda_shape };
 enum lambda_data_t { lambda_data };
+enum face_data_weight_t { face_data_weight };
 enum number_of_greedy_iterations_t { number_of_greedy_iterations };
 enum connectivity_period_t { connectivity_period };
 enum sharp_angle_bounds_t { sharp_angle_bounds };
@@ -99,6 +100,8 @@ namespace graphcut_parameters {
 CGAL_GRAPHCUT_REMESHING_PARAMETER(lambda_shape)
 /// weight of the data term of eq. (1), for a mesh scaled into the unit box; default `1e7`
 CGAL_GRAPHCUT_REMESHING_PARAMETER(lambda_data)
+/// weight of the data term at triangle centroids, relative to `lambda_data`; default `0.05`
+CGAL_GRAPHCUT_REMESHING_PARAMETER(face_data_weight)
 /// number of greedy (gradient) iterations after the relocation phase; default `20`
 CGAL_GRAPHCUT_REMESHING_PARAMETER(number_of_greedy_iterations)
 /// number of relocation iterations between two connectivity passes; default `5`

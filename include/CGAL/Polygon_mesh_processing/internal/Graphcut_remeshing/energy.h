@@ -42,6 +42,8 @@ struct Energy_weights
   double lambda_shape = 1;
   double lambda_data = 1e7;
   double epsilon = 0.01; // bound on the Taylor expansion point of eq. (4)
+  // Beyond the paper: the weight, relative to lambda_data, of the data term at triangle centroids.
+  double face_data_weight = 0.05;
 };
 
 // eq. (2): circumradius over shortest edge; 1/sqrt(3) for an equilateral triangle, infinite for a

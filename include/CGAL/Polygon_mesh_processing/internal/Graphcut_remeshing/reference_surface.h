@@ -29,6 +29,7 @@ class Reference_surface
 {
 public:
   using Vertex = typename Mesh::Vertex_index;
+  using Face = typename Mesh::Face_index;
 
   explicit Reference_surface(const Mesh& m) : m_mesh(m) { compute_frames(); }
 
@@ -62,57 +63,98 @@ public:
     return current;
   }
 
-  // The frame of eq. (4) at the point of the reference triangles around `near` (those incident to
-  // it and to its neighbours) closest to x: there the normal is the triangle's, and the principal
-  // directions and curvatures are interpolated from the triangle's vertices. When the closest
-  // point is inside a triangle, x - origin is along the normal and eq. (4) is the exact squared
-  // distance to the reference triangles.
-  Local_frame frame_at_closest_point(const Vector_3d& x, Vertex near) const
+  // The frame of eq. (4) at the point of the reference triangles closest to x, found by descent
+  // from the triangle `hint` (updated to the triangle of that point): across an edge when the
+  // closest point of the current triangle is on that edge, around a vertex when it is that vertex.
+  // There the normal is the triangle's, and the principal directions and curvatures are
+  // interpolated from the triangle's vertices. When the closest point is inside a triangle,
+  // x - origin is along the normal and eq. (4) is the exact squared distance to the reference.
+  Local_frame frame_at_closest_point(const Vector_3d& x, Face& hint) const
   {
-    double best = std::numeric_limits<double>::infinity();
-    Local_frame result = frame(near);
-    const auto h0 = m_mesh.halfedge(near);
-    if(h0 == Mesh::null_halfedge())
-      return result;
-    auto visit_faces_around = [&](Vertex u) {
-      for(auto h : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+    std::array<double, 3> w;
+    std::array<Vertex, 3> t = face_vertices(hint);
+    Vector_3d c = closest_point_on_triangle(x, point(t[0]), point(t[1]), point(t[2]), w);
+    double best = (x - c).squaredNorm();
+    for(std::size_t guard = 0; guard < m_mesh.number_of_faces(); ++guard)
+    {
+      Face next_face = hint;
+      const int zeros = (w[0] == 0) + (w[1] == 0) + (w[2] == 0);
+      if(zeros == 1)
       {
-        if(m_mesh.is_border(h))
-          continue;
-        const std::array<Vertex, 3> t{{m_mesh.source(h), m_mesh.target(h), m_mesh.target(m_mesh.next(h))}};
-        const std::array<Vector_3d, 3> p{{point(t[0]), point(t[1]), point(t[2])}};
-        std::array<double, 3> w;
-        const Vector_3d c = closest_point_on_triangle(x, p[0], p[1], p[2], w);
-        const double d = (x - c).squaredNorm();
-        if(d >= best)
-          continue;
-        const Vector_3d n = area_vector(p[0], p[1], p[2]);
-        if(!(n.norm() > 0))
-          continue;
-        best = d;
-        result.origin = c;
-        result.normal = n.normalized();
-        Vector_3d d1 = Vector_3d::Zero();
-        result.k1 = result.k2 = 0;
-        for(int i = 0; i < 3; ++i)
-        {
-          const Local_frame& fi = frame(t[i]);
-          // Principal directions are defined up to sign: align them before averaging.
-          d1 += w[i] * (fi.d1.dot(frame(t[0]).d1) < 0 ? Vector_3d(-fi.d1) : fi.d1);
-          result.k1 += w[i] * fi.k1;
-          result.k2 += w[i] * fi.k2;
-        }
-        d1 = tangential(d1, result.normal);
-        if(!(d1.norm() > 1e-12))
-          d1 = result.normal.unitOrthogonal();
-        result.d1 = d1.normalized();
-        result.d2 = result.normal.cross(result.d1);
+        // On the edge opposite the vertex of weight 0: look across it.
+        const int i = w[0] == 0 ? 0 : (w[1] == 0 ? 1 : 2);
+        const auto h = m_mesh.halfedge(t[(i + 1) % 3], t[(i + 2) % 3]);
+        const auto o = m_mesh.opposite(h);
+        if(h != Mesh::null_halfedge() && !m_mesh.is_border(o))
+          next_face = m_mesh.face(o);
       }
-    };
-    visit_faces_around(near);
-    for(auto h : halfedges_around_target(h0, m_mesh))
-      visit_faces_around(m_mesh.source(h));
+      else if(zeros == 2)
+      {
+        // At a vertex: the closest of the triangles around it.
+        const Vertex u = t[w[0] == 1 ? 0 : (w[1] == 1 ? 1 : 2)];
+        double around = best;
+        for(auto h : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+          if(!m_mesh.is_border(h))
+          {
+            const std::array<Vertex, 3> g = face_vertices(m_mesh.face(h));
+            std::array<double, 3> wg;
+            const double d = (x - closest_point_on_triangle(x, point(g[0]), point(g[1]), point(g[2]), wg)).squaredNorm();
+            if(d < around)
+            {
+              around = d;
+              next_face = m_mesh.face(h);
+            }
+          }
+      }
+      if(next_face == hint)
+        break;
+      const std::array<Vertex, 3> g = face_vertices(next_face);
+      std::array<double, 3> wg;
+      const Vector_3d cg = closest_point_on_triangle(x, point(g[0]), point(g[1]), point(g[2]), wg);
+      const double d = (x - cg).squaredNorm();
+      if(!(d < best))
+        break;
+      best = d;
+      hint = next_face;
+      t = g;
+      w = wg;
+      c = cg;
+    }
+
+    Local_frame result;
+    result.origin = c;
+    const Vector_3d n = area_vector(point(t[0]), point(t[1]), point(t[2]));
+    result.normal = n.norm() > 0 ? Vector_3d(n.normalized()) : frame(t[0]).normal;
+    Vector_3d d1 = Vector_3d::Zero();
+    for(int i = 0; i < 3; ++i)
+    {
+      const Local_frame& fi = frame(t[i]);
+      // Principal directions are defined up to sign: align them before averaging.
+      d1 += w[i] * (fi.d1.dot(frame(t[0]).d1) < 0 ? Vector_3d(-fi.d1) : fi.d1);
+      result.k1 += w[i] * fi.k1;
+      result.k2 += w[i] * fi.k2;
+    }
+    d1 = tangential(d1, result.normal);
+    result.d1 = d1.norm() > 1e-12 ? Vector_3d(d1.normalized()) : Vector_3d(result.normal.unitOrthogonal());
+    result.d2 = result.normal.cross(result.d1);
     return result;
+  }
+
+  // A triangle incident to v (the null face for an isolated vertex).
+  Face incident_face(Vertex v) const
+  {
+    const auto h0 = m_mesh.halfedge(v);
+    if(h0 != Mesh::null_halfedge())
+      for(auto h : halfedges_around_target(h0, m_mesh))
+        if(!m_mesh.is_border(h))
+          return m_mesh.face(h);
+    return Mesh::null_face();
+  }
+
+  std::array<Vertex, 3> face_vertices(Face f) const
+  {
+    const auto h = m_mesh.halfedge(f);
+    return {{m_mesh.source(h), m_mesh.target(h), m_mesh.target(m_mesh.next(h))}};
   }
 
   // Area-weighted vertex normal (unit, or zero for an isolated vertex).

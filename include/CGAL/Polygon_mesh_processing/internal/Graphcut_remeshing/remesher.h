@@ -14,10 +14,14 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Random.h>
+#include <CGAL/property_map.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -64,9 +68,19 @@ public:
     const std::size_t n = m_mesh.number_of_vertices();
     m_closest.resize(n);
     m_location.resize(n);
+    m_vertex_hint.resize(n);
+    m_face_hint.resize(m_mesh.number_of_faces());
+    for(Face f : m_mesh.faces())
+      m_face_hint[std::size_t(f)] = f; // the working mesh starts as the reference
+    // Intersections the input already has are not the optimisation's doing.
+    self_intersecting_pairs(m_mesh, m_input_intersections);
+    for(auto& p : m_input_intersections)
+      p = ordered(p);
+    std::sort(m_input_intersections.begin(), m_input_intersections.end());
     for(Vertex v : m_mesh.vertices())
     {
-      m_closest[std::size_t(v)] = v; // the working mesh starts as the reference
+      m_closest[std::size_t(v)] = v;
+      m_vertex_hint[std::size_t(v)] = m_reference.incident_face(v);
       if(kind_of(v) == Vertex_kind::feature_vertex)
         m_location[std::size_t(v)] = m_polylines.at_vertex(v);
     }
@@ -82,10 +96,8 @@ public:
     double u = 0;
     for(Face f : m_mesh.faces())
     {
-      const Halfedge h = m_mesh.halfedge(f);
-      u += m_options.weights.lambda_shape *
-           shape_energy(position(m_mesh.target(h)), position(m_mesh.target(m_mesh.next(h))),
-                        position(m_mesh.source(h)));
+      const std::array<Vertex, 3> t = face_vertices(f);
+      u += triangle_energy(f, position(t[0]), position(t[1]), position(t[2]));
     }
     for(Vertex v : m_mesh.vertices())
       u += data_energy(v, position(v));
@@ -131,7 +143,7 @@ public:
   // candidate per vertex, let the graph cut decide. Returns the number of vertices moved.
   std::size_t relocate(double temperature, bool greedy)
   {
-    update_closest_reference_vertices();
+    update_tracking();
 
     // Candidates.
     const std::size_t n = m_mesh.number_of_vertices();
@@ -154,18 +166,63 @@ public:
     if(moving.empty())
       return 0;
 
-    // The binary energy: data terms as unaries, shape terms as terms of up to three variables.
-    Binary_graph_cut cut(moving.size());
-    for(std::size_t i = 0; i < moving.size(); ++i)
-      cut.add_unary(i, data_energy(moving[i], position(moving[i])), data_energy(moving[i], candidate[i]));
+    // The cut decides; should its choice make triangles that were apart intersect, the vertices of
+    // those triangles keep their positions and the cut decides again (each cut is over fewer
+    // candidates and never does worse than keeping everything, so the energy still does not rise).
+    std::vector<char> excluded(moving.size(), 0);
+    for(;;)
+    {
+      const std::vector<char> labels = decide(moving, candidate, variable, excluded);
+      std::vector<Vector_3d> previous(moving.size());
+      std::size_t moved = 0;
+      for(std::size_t i = 0; i < moving.size(); ++i)
+      {
+        previous[i] = position(moving[i]);
+        if(labels[i])
+        {
+          set_position(moving[i], candidate[i]);
+          ++moved;
+        }
+      }
+      bool clean = true;
+      for(const auto& pair : new_self_intersections())
+        for(Face f : {pair.first, pair.second})
+          for(Vertex u : face_vertices(f))
+          {
+            const std::size_t i = variable[std::size_t(u)];
+            if(i != Binary_graph_cut::none && labels[i])
+            {
+              excluded[i] = 1;
+              clean = false;
+            }
+          }
+      if(clean)
+      {
+        for(std::size_t i = 0; i < moving.size(); ++i)
+          if(labels[i] && kind_of(moving[i]) == Vertex_kind::feature_vertex)
+            m_location[std::size_t(moving[i])] = candidate_location[i];
+        return moved;
+      }
+      for(std::size_t i = 0; i < moving.size(); ++i)
+        set_position(moving[i], previous[i]);
+    }
+  }
 
+  // The binary energy of the candidates: data terms as unaries, triangle terms over the triangles'
+  // moving vertices; the excluded candidates cannot be taken.
+  std::vector<char> decide(const std::vector<Vertex>& moving, const std::vector<Vector_3d>& candidate,
+                           const std::vector<std::size_t>& variable, const std::vector<char>& excluded) const
+  {
     // A configuration that would fold or flatten a triangle costs more than the whole current
     // energy, so the cut, which never does worse than keeping everything, never picks it.
     const double forbidden = 1e3 * (energy() + 1);
+    Binary_graph_cut cut(moving.size());
+    for(std::size_t i = 0; i < moving.size(); ++i)
+      cut.add_unary(i, data_energy(moving[i], position(moving[i])),
+                    excluded[i] ? forbidden : data_energy(moving[i], candidate[i]));
     for(Face f : m_mesh.faces())
     {
-      const Halfedge h = m_mesh.halfedge(f);
-      const std::array<Vertex, 3> v{{m_mesh.target(h), m_mesh.target(m_mesh.next(h)), m_mesh.source(h)}};
+      const std::array<Vertex, 3> v = face_vertices(f);
       std::array<std::size_t, 3> var{}, slot{};
       int k = 0;
       for(int i = 0; i < 3; ++i)
@@ -189,7 +246,7 @@ public:
         if(mask != 0 && !is_acceptable_triangle(p[0], p[1], p[2], current_normal))
           table[mask] = forbidden;
         else
-          table[mask] = m_options.weights.lambda_shape * shape_energy(p[0], p[1], p[2]);
+          table[mask] = triangle_energy(f, p[0], p[1], p[2]);
       }
       if(k == 1)
         cut.add_unary(var[0], table[0], table[1]);
@@ -198,38 +255,70 @@ public:
       else
         cut.add_term(var[0], var[1], var[2], table);
     }
+    return cut.solve();
+  }
 
-    const std::vector<char> labels = cut.solve();
-    std::size_t moved = 0;
-    for(std::size_t i = 0; i < moving.size(); ++i)
-      if(labels[i])
-      {
-        const Vector_3d& c = candidate[i];
-        m_mesh.point(moving[i]) = Work_kernel::Point_3(c.x(), c.y(), c.z());
-        if(kind_of(moving[i]) == Vertex_kind::feature_vertex)
-          m_location[std::size_t(moving[i])] = candidate_location[i];
-        ++moved;
-      }
-    return moved;
+  void set_position(Vertex v, const Vector_3d& p) { m_mesh.point(v) = Work_kernel::Point_3(p.x(), p.y(), p.z()); }
+
+  // Pairs of intersecting triangles that did not intersect in the input (exact predicates).
+  std::vector<std::pair<Face, Face> > new_self_intersections() const
+  {
+    std::vector<std::pair<Face, Face> > pairs, fresh;
+    self_intersecting_pairs(m_mesh, pairs);
+    for(const auto& p : pairs)
+      if(!std::binary_search(m_input_intersections.begin(), m_input_intersections.end(), ordered(p)))
+        fresh.push_back(p);
+    return fresh;
+  }
+
+  static std::pair<Face, Face> ordered(const std::pair<Face, Face>& p)
+  {
+    return p.first < p.second ? p : std::make_pair(p.second, p.first);
+  }
+
+  static void self_intersecting_pairs(const Work_mesh& m, std::vector<std::pair<Face, Face> >& out)
+  {
+    using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+    using Point_map = Work_mesh::Property_map<Vertex, Work_kernel::Point_3>;
+    CGAL::Cartesian_converter_property_map<Epick::Point_3, Point_map> exact_points(m.points());
+    CGAL::Polygon_mesh_processing::self_intersections(
+      m, std::back_inserter(out), CGAL::parameters::vertex_point_map(exact_points).geom_traits(Epick()));
   }
 
   const Reference_surface<Work_mesh>& reference() const { return m_reference; }
 
 private:
+  std::array<Vertex, 3> face_vertices(Face f) const
+  {
+    const Halfedge h = m_mesh.halfedge(f);
+    return {{m_mesh.source(h), m_mesh.target(h), m_mesh.target(m_mesh.next(h))}};
+  }
+
+  // F of eq. (4) in the frame at the point of the reference triangles closest to x, searched from
+  // the triangle `hint`.
+  double squared_distance(const Vector_3d& x, Face hint) const
+  {
+    return squared_distance_approximation(x, m_reference.frame_at_closest_point(x, hint),
+                                          m_options.weights.epsilon);
+  }
+
   // lambda_data F(x) for a free vertex; vertices on features lie on the reference polylines by
   // construction and fixed vertices do not move, so they have no data term.
   double data_energy(Vertex v, const Vector_3d& x) const
   {
     if(kind_of(v) != Vertex_kind::free_vertex)
       return 0;
-    return m_options.weights.lambda_data * squared_distance(x, m_closest[std::size_t(v)]);
+    return m_options.weights.lambda_data * squared_distance(x, m_vertex_hint[std::size_t(v)]);
   }
 
-  // F of eq. (4) in the frame at the closest point of the reference triangles around `near`.
-  double squared_distance(const Vector_3d& x, Vertex near) const
+  // The terms of eq. (1) that belong to triangle f at positions (a, b, c): its shape, and beyond
+  // the paper a data term at its centroid, so that a triangle cutting a chord through a curved
+  // part of the reference pays for it even when its vertices lie on the reference.
+  double triangle_energy(Face f, const Vector_3d& a, const Vector_3d& b, const Vector_3d& c) const
   {
-    return squared_distance_approximation(x, m_reference.frame_at_closest_point(x, near),
-                                          m_options.weights.epsilon);
+    return m_options.weights.lambda_shape * shape_energy(a, b, c) +
+           m_options.weights.face_data_weight * m_options.weights.lambda_data *
+             squared_distance((a + b + c) / 3, m_face_hint[std::size_t(f)]);
   }
 
   // eq. (7): the energy terms that depend on the position x of vertex v.
@@ -238,26 +327,29 @@ private:
     double u = data_energy(v, x);
     for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
       if(!m_mesh.is_border(h))
-        u += m_options.weights.lambda_shape *
-             shape_energy(x, position(m_mesh.target(m_mesh.next(h))), position(m_mesh.source(h)));
+        u += triangle_energy(m_mesh.face(h), x, position(m_mesh.target(m_mesh.next(h))),
+                             position(m_mesh.source(h)));
     return u;
   }
 
-  // Section 2.1's tracking: move each free vertex's reference to a closer reference vertex, when
-  // that does not raise its data term (so the energy stays monotone from one iteration to the next).
-  void update_closest_reference_vertices()
+  // Section 2.1's tracking: the closest reference vertex y_s0 by local search, and the nearest
+  // reference triangles of vertices and centroids (caching where the descent ends does not change
+  // any term at the current positions).
+  void update_tracking()
   {
     for(Vertex v : m_mesh.vertices())
     {
       if(kind_of(v) != Vertex_kind::free_vertex)
         continue;
       const Vector_3d x = position(v);
-      const Vertex old_ref = m_closest[std::size_t(v)];
-      const Vertex new_ref = m_reference.closest_vertex(x, old_ref);
-      if(new_ref == old_ref)
-        continue;
-      if(squared_distance(x, new_ref) <= squared_distance(x, old_ref))
-        m_closest[std::size_t(v)] = new_ref;
+      m_closest[std::size_t(v)] = m_reference.closest_vertex(x, m_closest[std::size_t(v)]);
+      m_reference.frame_at_closest_point(x, m_vertex_hint[std::size_t(v)]);
+    }
+    for(Face f : m_mesh.faces())
+    {
+      const std::array<Vertex, 3> t = face_vertices(f);
+      m_reference.frame_at_closest_point((position(t[0]) + position(t[1]) + position(t[2])) / 3,
+                                         m_face_hint[std::size_t(f)]);
     }
   }
 
@@ -291,20 +383,27 @@ private:
       out = c;
       return true;
     };
+    // Beyond the paper: a tangent-plane move leaves a curved surface by about k d^2 / 2; bringing
+    // the candidate back onto the reference triangles keeps the data term near zero, so the shape
+    // term alone decides, as the paper intends its tangent moves to.
+    auto on_surface = [&](const Vector_3d& c) {
+      Face hint = m_vertex_hint[std::size_t(v)];
+      return m_reference.frame_at_closest_point(c, hint).origin;
+    };
 
     if(!greedy)
     {
       const double gamma = m_options.smoothing_step;
-      if(accept(x + gamma * tangential(angle_based_target(x, link) - x, frame.normal)))
+      if(accept(on_surface(x + gamma * tangential(angle_based_target(x, link) - x, frame.normal))))
         return true;
-      if(accept(x + gamma * tangential(laplacian_target(x, ring) - x, frame.normal)))
+      if(accept(on_surface(x + gamma * tangential(laplacian_target(x, ring) - x, frame.normal))))
         return true;
       // Guided random: a random direction of the tangent plane, a random length in the sphere.
       for(int attempt = 0; attempt < 3; ++attempt)
       {
         const double angle = m_rng.get_double(0, 2 * pi);
         const double length = sigma * m_rng.get_double(0.1, 1.0);
-        if(accept(x + length * (std::cos(angle) * frame.d1 + std::sin(angle) * frame.d2)))
+        if(accept(on_surface(x + length * (std::cos(angle) * frame.d1 + std::sin(angle) * frame.d2))))
           return true;
       }
       return false;
@@ -389,7 +488,10 @@ private:
   Polylines m_polylines;
   Remeshing_options m_options;
   CGAL::Random m_rng;
-  std::vector<Vertex> m_closest;     // y_s0 of each vertex
+  std::vector<Vertex> m_closest;     // y_s0 of each vertex: its frame gives the tangent plane and rho
+  std::vector<Face> m_vertex_hint;   // reference triangle nearest to each vertex
+  std::vector<Face> m_face_hint;     // reference triangle nearest to each face's centroid
+  std::vector<std::pair<Face, Face> > m_input_intersections; // sorted
   std::vector<Location> m_location;  // place on the reference polyline of each feature vertex
 };
 
