@@ -117,7 +117,7 @@ public:
   // The location of a reference vertex on a feature polyline.
   Location at_vertex(Vertex v) const
   {
-    for(auto h : halfedges_around_source(m_mesh.halfedge(v), m_mesh))
+    for(auto h : halfedges_around_source(v, m_mesh))
       if(is_feature(h))
         return Location{h, 0.};
     return Location{m_mesh.halfedge(v), 0.};
@@ -146,7 +146,7 @@ public:
     const Vertex v = l.t <= 0 ? m_mesh.source(l.h) : m_mesh.target(l.h);
     std::array<Vector_3d, 2> out{{Vector_3d::Zero(), Vector_3d::Zero()}};
     int n = 0;
-    for(auto g : halfedges_around_source(m_mesh.halfedge(v), m_mesh))
+    for(auto g : halfedges_around_source(v, m_mesh))
       if(is_feature(g) && n < 2)
         out[n++] = direction(g);
     const Vector_3d t = n == 2 ? Vector_3d(out[0] - out[1]) : out[0];
@@ -163,7 +163,7 @@ public:
       const Vertex v = l.t <= 0 ? m_mesh.source(l.h) : m_mesh.target(l.h);
       Halfedge best = l.h;
       double best_dot = 0;
-      for(auto g : halfedges_around_source(m_mesh.halfedge(v), m_mesh))
+      for(auto g : halfedges_around_source(v, m_mesh))
         if(is_feature(g))
         {
           const double d = direction(g).dot(displacement);
@@ -197,7 +197,7 @@ public:
         return l;
       // Continue on the other feature edge of v.
       Halfedge next_h = l.h;
-      for(auto g : halfedges_around_source(m_mesh.halfedge(v), m_mesh))
+      for(auto g : halfedges_around_source(v, m_mesh))
         if(is_feature(g) && g != m_mesh.opposite(l.h))
           next_h = g;
       if(next_h == l.h)

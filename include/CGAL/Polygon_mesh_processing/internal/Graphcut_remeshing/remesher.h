@@ -52,6 +52,7 @@ class Graphcut_remesher
   using Vertex = Work_mesh::Vertex_index;
   using Halfedge = Work_mesh::Halfedge_index;
   using Face = Work_mesh::Face_index;
+  using Edge = Work_mesh::Edge_index;
   using Polylines = Feature_polylines<Work_mesh>;
   using Location = Polylines::Location;
 
@@ -72,6 +73,15 @@ public:
     m_face_hint.resize(m_mesh.number_of_faces());
     for(Face f : m_mesh.faces())
       m_face_hint[std::size_t(f)] = f; // the working mesh starts as the reference
+    m_feature_edge_slot.assign(m_mesh.number_of_edges(), Binary_graph_cut::none);
+    for(Edge e : m_mesh.edges())
+      if(m_feature_edge[std::size_t(e)])
+      {
+        m_feature_edge_slot[std::size_t(e)] = m_feature_edges.size();
+        m_feature_edges.push_back(e);
+        const Halfedge h = m_mesh.halfedge(e);
+        m_edge_hint.push_back(m_mesh.face(m_mesh.is_border(h) ? m_mesh.opposite(h) : h));
+      }
     // Intersections the input already has are not the optimisation's doing.
     self_intersecting_pairs(m_mesh, m_input_intersections);
     for(auto& p : m_input_intersections)
@@ -101,6 +111,11 @@ public:
     }
     for(Vertex v : m_mesh.vertices())
       u += data_energy(v, position(v));
+    for(std::size_t i = 0; i < m_feature_edges.size(); ++i)
+    {
+      const Halfedge h = m_mesh.halfedge(m_feature_edges[i]);
+      u += feature_edge_energy(i, position(m_mesh.source(h)), position(m_mesh.target(h)));
+    }
     return u;
   }
 
@@ -255,6 +270,22 @@ public:
       else
         cut.add_term(var[0], var[1], var[2], table);
     }
+    for(std::size_t e = 0; e < m_feature_edges.size(); ++e)
+    {
+      const Halfedge h = m_mesh.halfedge(m_feature_edges[e]);
+      const std::array<Vertex, 2> v{{m_mesh.source(h), m_mesh.target(h)}};
+      const std::size_t i = variable[std::size_t(v[0])], j = variable[std::size_t(v[1])];
+      const Vector_3d a = position(v[0]), b = position(v[1]);
+      if(i != Binary_graph_cut::none && j != Binary_graph_cut::none)
+        cut.add_term(i, j, Binary_graph_cut::none,
+                     {{feature_edge_energy(e, a, b), feature_edge_energy(e, candidate[i], b),
+                       feature_edge_energy(e, a, candidate[j]), feature_edge_energy(e, candidate[i], candidate[j]),
+                       0, 0, 0, 0}});
+      else if(i != Binary_graph_cut::none)
+        cut.add_unary(i, feature_edge_energy(e, a, b), feature_edge_energy(e, candidate[i], b));
+      else if(j != Binary_graph_cut::none)
+        cut.add_unary(j, feature_edge_energy(e, a, b), feature_edge_energy(e, a, candidate[j]));
+    }
     return cut.solve();
   }
 
@@ -321,6 +352,14 @@ private:
              squared_distance((a + b + c) / 3, m_face_hint[std::size_t(f)]);
   }
 
+  // Beyond the paper: the data term at the midpoint of the i-th feature edge (a, b). Feature
+  // vertices lie on the reference polylines, but an edge between two of them is a chord that
+  // leaves a curved feature line; this term makes it pay for that.
+  double feature_edge_energy(std::size_t i, const Vector_3d& a, const Vector_3d& b) const
+  {
+    return m_options.weights.lambda_data * squared_distance((a + b) / 2, m_edge_hint[i]);
+  }
+
   // eq. (7): the energy terms that depend on the position x of vertex v.
   double local_evidence(Vertex v, const Vector_3d& x) const
   {
@@ -329,6 +368,13 @@ private:
       if(!m_mesh.is_border(h))
         u += triangle_energy(m_mesh.face(h), x, position(m_mesh.target(m_mesh.next(h))),
                              position(m_mesh.source(h)));
+    if(kind_of(v) == Vertex_kind::feature_vertex)
+      for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      {
+        const std::size_t i = m_feature_edge_slot[std::size_t(m_mesh.edge(h))];
+        if(i != Binary_graph_cut::none)
+          u += feature_edge_energy(i, x, position(m_mesh.source(h)));
+      }
     return u;
   }
 
@@ -350,6 +396,12 @@ private:
       const std::array<Vertex, 3> t = face_vertices(f);
       m_reference.frame_at_closest_point((position(t[0]) + position(t[1]) + position(t[2])) / 3,
                                          m_face_hint[std::size_t(f)]);
+    }
+    for(std::size_t i = 0; i < m_feature_edges.size(); ++i)
+    {
+      const Halfedge h = m_mesh.halfedge(m_feature_edges[i]);
+      m_reference.frame_at_closest_point((position(m_mesh.source(h)) + position(m_mesh.target(h))) / 2,
+                                         m_edge_hint[i]);
     }
   }
 
@@ -409,7 +461,8 @@ private:
       return false;
     }
 
-    // Greedy phase: along the negative gradient of the local evidence (central differences).
+    // Greedy phase: along the negative gradient of the local evidence (central differences),
+    // brought back onto the reference like the other candidates.
     const double step = 1e-3 * sigma;
     Vector_3d gradient;
     for(int a = 0; a < 3; ++a)
@@ -421,7 +474,7 @@ private:
       return false;
     const Vector_3d descent = -gradient.normalized();
     for(int attempt = 0; attempt < 3; ++attempt)
-      if(accept(x + sigma * m_rng.get_double(0.05, 1.0) * descent))
+      if(accept(on_surface(x + sigma * m_rng.get_double(0.05, 1.0) * descent)))
         return true;
     return false;
   }
@@ -491,6 +544,9 @@ private:
   std::vector<Vertex> m_closest;     // y_s0 of each vertex: its frame gives the tangent plane and rho
   std::vector<Face> m_vertex_hint;   // reference triangle nearest to each vertex
   std::vector<Face> m_face_hint;     // reference triangle nearest to each face's centroid
+  std::vector<Edge> m_feature_edges; // the feature edges of the working mesh
+  std::vector<std::size_t> m_feature_edge_slot; // by edge index: position in m_feature_edges
+  std::vector<Face> m_edge_hint;     // reference triangle nearest to each feature edge's midpoint
   std::vector<std::pair<Face, Face> > m_input_intersections; // sorted
   std::vector<Location> m_location;  // place on the reference polyline of each feature vertex
 };

@@ -1,0 +1,381 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// graphcut_isotropic_remeshing as a whole: monotone energy, features kept, constraints honoured,
+// repeatability, and the quality / fidelity bar on the paper's models.
+
+#include "test_meshes.h"
+
+#include <CGAL/Polygon_mesh_processing/graphcut_isotropic_remeshing.h>
+#include <CGAL/Polygon_mesh_processing/mesh_quality_report.h>
+
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/tangential_relaxation.h>
+#include <CGAL/Random.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace GP = PMP::graphcut_parameters;
+namespace GR = PMP::internal::Graphcut_remeshing;
+using namespace graphcut_remeshing_test;
+
+namespace {
+
+// An icosphere whose vertices are pushed at random along and across the surface.
+Mesh noisy_sphere(unsigned levels, double tangential, double normal, unsigned seed)
+{
+  Mesh m = make_sphere(levels);
+  CGAL::Random rng(seed);
+  for(auto v : vertices(m))
+  {
+    const Vector n = m.point(v) - CGAL::ORIGIN;
+    const Vector t = CGAL::cross_product(n, Vector(rng.get_double(-1, 1), rng.get_double(-1, 1), rng.get_double(-1, 1)));
+    m.point(v) = m.point(v) + tangential * t + normal * rng.get_double(-1, 1) * n;
+  }
+  return m;
+}
+
+// A closed box [0, a] x [0, b] x [0, c] whose faces are n x n grids, each slightly jittered
+// inside its face plane so that the triangles are uneven.
+Mesh jittered_box(double a, double b, double c, std::size_t n, unsigned seed)
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  CGAL::Random rng(seed);
+  std::map<std::array<long, 3>, std::size_t> index;
+  auto vertex = [&](long i, long j, long k) {
+    const std::array<long, 3> key{{i, j, k}};
+    auto it = index.find(key);
+    if(it != index.end())
+      return it->second;
+    // Jitter along the coordinates that are not on the box's boundary in that direction.
+    double p[3] = {double(i), double(j), double(k)};
+    const long ijk[3] = {i, j, k};
+    for(int d = 0; d < 3; ++d)
+      if(ijk[d] != 0 && ijk[d] != long(n))
+        p[d] += rng.get_double(-0.3, 0.3);
+    points.emplace_back(a * p[0] / double(n), b * p[1] / double(n), c * p[2] / double(n));
+    index.emplace(key, points.size() - 1);
+    return points.size() - 1;
+  };
+  // Each face: a grid over two free coordinates, the third fixed at 0 or n, oriented outwards.
+  for(int axis = 0; axis < 3; ++axis)
+    for(long side : {0l, long(n)})
+      for(long u = 0; u < long(n); ++u)
+        for(long w = 0; w < long(n); ++w)
+        {
+          auto at = [&](long s, long t) {
+            long ijk[3];
+            ijk[axis] = side;
+            ijk[(axis + 1) % 3] = s;
+            ijk[(axis + 2) % 3] = t;
+            return vertex(ijk[0], ijk[1], ijk[2]);
+          };
+          const std::size_t p00 = at(u, w), p10 = at(u + 1, w), p11 = at(u + 1, w + 1), p01 = at(u, w + 1);
+          if(side == 0)
+          {
+            triangles.push_back({{p00, p11, p10}});
+            triangles.push_back({{p00, p01, p11}});
+          }
+          else
+          {
+            triangles.push_back({{p00, p10, p11}});
+            triangles.push_back({{p00, p11, p01}});
+          }
+        }
+  return mesh_from_soup(points, triangles);
+}
+
+std::set<std::pair<std::size_t, std::size_t> > intersecting_pairs(const Mesh& m)
+{
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > pairs;
+  PMP::self_intersections(m, std::back_inserter(pairs));
+  std::set<std::pair<std::size_t, std::size_t> > s;
+  for(const auto& p : pairs)
+    s.emplace((std::min)(std::size_t(p.first), std::size_t(p.second)), (std::max)(std::size_t(p.first), std::size_t(p.second)));
+  return s;
+}
+
+double distance_to_segment(const Point& p, const Point& a, const Point& b)
+{
+  return GR::distance_to_segment(GR::to_vector(p), GR::to_vector(a), GR::to_vector(b));
+}
+
+void expect_monotone(const std::vector<double>& energies, const std::string& name)
+{
+  ASSERT_GE(energies.size(), 2u);
+  for(std::size_t i = 1; i < energies.size(); ++i)
+    EXPECT_LE(energies[i], energies[i - 1] * (1 + 1e-12)) << name << ": energy rose at iteration " << i;
+}
+
+} // namespace
+
+TEST(GraphcutRemeshing, EnergyNeverRises)
+{
+  struct Case { std::string name; Mesh mesh; };
+  std::vector<Case> cases;
+  cases.push_back({"fandisk", load_sample_mesh("fandisk")});
+  cases.push_back({"noisy sphere", noisy_sphere(3, 0.03, 0.01, 1)});
+  cases.push_back({"jittered box", jittered_box(1, 2, 0.5, 6, 2)});
+  for(Case& c : cases)
+  {
+    const PMP::Graphcut_remeshing_statistics stats = PMP::graphcut_isotropic_remeshing(
+      c.mesh, GP::combine(CGAL::parameters::number_of_iterations(40), GP::number_of_greedy_iterations(10)));
+    EXPECT_EQ(stats.energies.size(), 51u) << c.name;
+    EXPECT_EQ(stats.number_of_iterations, 50u) << c.name;
+    expect_monotone(stats.energies, c.name);
+    // The optimisation must actually work: moves taken, energy clearly lower.
+    EXPECT_GT(stats.number_of_moves, num_vertices(c.mesh)) << c.name;
+    EXPECT_LT(stats.energies.back(), 0.99 * stats.energies.front()) << c.name;
+  }
+}
+
+TEST(GraphcutRemeshing, BoxCornersStayAndEdgeVerticesStayOnEdges)
+{
+  for(double scale : {1e-3, 1.0, 1e3})
+  {
+    const Mesh input = jittered_box(1 * scale, 2 * scale, 0.5 * scale, 6, 3);
+    Mesh m = input;
+    PMP::graphcut_isotropic_remeshing(m, GP::combine(CGAL::parameters::number_of_iterations(30),
+                                                     GP::number_of_greedy_iterations(5)));
+    const double a = 1 * scale, b = 2 * scale, c = 0.5 * scale, tolerance = 1e-12 * scale;
+    std::size_t corners = 0, on_edges = 0, moved = 0;
+    for(auto v : vertices(m))
+    {
+      const Point& p = input.point(v);
+      const Point& q = m.point(v);
+      // How many coordinates are on the box's boundary decides corner / edge / face.
+      const double x[3] = {p.x(), p.y(), p.z()}, size[3] = {a, b, c};
+      int bounded = 0;
+      for(int d = 0; d < 3; ++d)
+        bounded += (x[d] == 0 || std::abs(x[d] - size[d]) < 1e-12 * scale) ? 1 : 0;
+      const double y[3] = {q.x(), q.y(), q.z()};
+      int still = 0;
+      for(int d = 0; d < 3; ++d)
+        if(x[d] == 0 || std::abs(x[d] - size[d]) < 1e-12 * scale)
+          still += std::abs(y[d] - x[d]) <= tolerance ? 1 : 0;
+      if(bounded == 3)
+      {
+        ++corners;
+        EXPECT_EQ(p, q) << "a corner moved";
+      }
+      else if(bounded == 2)
+      {
+        ++on_edges;
+        EXPECT_EQ(still, 2) << "an edge vertex left its edge: " << p << " -> " << q;
+      }
+      else
+        EXPECT_EQ(still, 1) << "a face vertex left its face: " << p << " -> " << q;
+      if(!(p == q))
+        ++moved;
+    }
+    EXPECT_EQ(corners, 8u);
+    EXPECT_EQ(on_edges, 12u * 5u);
+    EXPECT_GT(moved, num_vertices(m) / 2);
+    EXPECT_GT(PMP::mesh_quality_report(m).mean_min_angle, PMP::mesh_quality_report(input).mean_min_angle + 2);
+  }
+}
+
+TEST(GraphcutRemeshing, FandiskFeaturesStayWhereTheyWere)
+{
+  const Mesh input = load_sample_mesh("fandisk");
+  Mesh m = input;
+  PMP::graphcut_isotropic_remeshing(m, GP::combine(CGAL::parameters::number_of_iterations(40),
+                                                   GP::number_of_greedy_iterations(10)));
+  // The input's sharp edges by the same hysteresis as the remesher.
+  GR::Work_mesh w;
+  for(auto v : vertices(input))
+    w.add_vertex(GR::Work_kernel::Point_3(input.point(v).x(), input.point(v).y(), input.point(v).z()));
+  for(auto f : faces(input))
+  {
+    const auto h = halfedge(f, input);
+    w.add_face(GR::Work_mesh::Vertex_index(std::size_t(source(h, input))),
+               GR::Work_mesh::Vertex_index(std::size_t(target(h, input))),
+               GR::Work_mesh::Vertex_index(std::size_t(target(next(h, input), input))));
+  }
+  const std::vector<char> sharp = GR::detect_sharp_edges(w, 20, 35);
+  const std::vector<GR::Vertex_kind> kind = GR::classify_vertices(w, sharp, std::vector<char>(num_vertices(w), 0));
+  std::vector<std::pair<Point, Point> > segments;
+  auto point = [&w](GR::Work_mesh::Vertex_index v) { return Point(w.point(v).x(), w.point(v).y(), w.point(v).z()); };
+  for(auto e : w.edges())
+    if(sharp[std::size_t(e)])
+      segments.emplace_back(point(w.source(w.halfedge(e))), point(w.target(w.halfedge(e))));
+  ASSERT_GT(segments.size(), 100u);
+
+  const CGAL::Bbox_3 box = PMP::bbox(input);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  std::size_t fixed = 0, sliding = 0, slid = 0;
+  for(auto v : vertices(m))
+  {
+    const GR::Vertex_kind k = kind[std::size_t(v)];
+    if(k == GR::Vertex_kind::fixed_vertex)
+    {
+      ++fixed;
+      EXPECT_EQ(m.point(v), input.point(v)) << "corner " << v << " moved";
+    }
+    else if(k == GR::Vertex_kind::feature_vertex)
+    {
+      ++sliding;
+      double d = std::numeric_limits<double>::infinity();
+      for(const auto& s : segments)
+        d = (std::min)(d, distance_to_segment(m.point(v), s.first, s.second));
+      EXPECT_LT(d, 1e-12 * diagonal) << "feature vertex " << v << " left the feature lines";
+      if(!(m.point(v) == input.point(v)))
+        ++slid;
+    }
+  }
+  EXPECT_GT(fixed, 0u);
+  EXPECT_GT(sliding, 100u);
+  EXPECT_GT(slid, sliding / 4) << "feature vertices should slide, not freeze";
+}
+
+TEST(GraphcutRemeshing, UserConstraintsAreHonoured)
+{
+  Mesh m = noisy_sphere(3, 0.03, 0.0, 4);
+  const Mesh input = m;
+  auto vcm = m.add_property_map<Mesh::Vertex_index, bool>("v:constrained", false).first;
+  auto ecm = m.add_property_map<Mesh::Edge_index, bool>("e:constrained", false).first;
+  CGAL::Random rng(5);
+  for(auto v : vertices(m))
+    vcm[v] = rng.get_int(0, 10) == 0;
+  // A closed loop of edges: the faces' edges crossing the plane z = 0 side are constrained
+  // (the border between the faces with a vertex below and the others).
+  std::size_t constrained_edges = 0;
+  for(auto e : edges(m))
+  {
+    const auto h = halfedge(e, m);
+    auto below = [&](Mesh::Face_index f) {
+      for(auto u : vertices_around_face(halfedge(f, m), m))
+        if(m.point(u).z() < 0)
+          return true;
+      return false;
+    };
+    if(below(face(h, m)) != below(face(opposite(h, m), m)))
+    {
+      ecm[e] = true;
+      ++constrained_edges;
+    }
+  }
+  ASSERT_GT(constrained_edges, 10u);
+  PMP::graphcut_isotropic_remeshing(m, GP::combine(CGAL::parameters::number_of_iterations(30)
+                                                     .vertex_is_constrained_map(vcm)
+                                                     .edge_is_constrained_map(ecm),
+                                                   GP::number_of_greedy_iterations(5)));
+  for(auto v : vertices(m))
+  {
+    if(vcm[v])
+      EXPECT_EQ(m.point(v), input.point(v)) << "constrained vertex " << v << " moved";
+  }
+  // Vertices of constrained edges stay on the polyline of constrained input edges.
+  for(auto e : edges(m))
+    if(ecm[e])
+      for(auto v : {source(e, m), target(e, m)})
+      {
+        double d = std::numeric_limits<double>::infinity();
+        for(auto g : edges(input))
+          if(ecm[g])
+            d = (std::min)(d, distance_to_segment(m.point(v), input.point(source(g, input)), input.point(target(g, input))));
+        EXPECT_LT(d, 1e-12) << "vertex " << v << " left the constrained polyline";
+      }
+}
+
+TEST(GraphcutRemeshing, SameSeedSameResult)
+{
+  const Mesh input = noisy_sphere(3, 0.03, 0.01, 6);
+  auto run = [&](unsigned seed) {
+    Mesh m = input;
+    PMP::graphcut_isotropic_remeshing(m, GP::combine(CGAL::parameters::number_of_iterations(20).random_seed(seed),
+                                                     GP::number_of_greedy_iterations(5)));
+    std::vector<Point> p;
+    for(auto v : vertices(m))
+      p.push_back(m.point(v));
+    return p;
+  };
+  const std::vector<Point> a = run(1), b = run(1), c = run(2);
+  EXPECT_TRUE(a == b);
+  EXPECT_FALSE(a == c);
+}
+
+TEST(GraphcutRemeshing, VisitorSeesEveryIterationAndCanStop)
+{
+  Mesh m = noisy_sphere(2, 0.03, 0.01, 7);
+  std::vector<PMP::Graphcut_remeshing_progress> seen;
+  auto record = [&seen](const PMP::Graphcut_remeshing_progress& p) {
+    seen.push_back(p);
+    return true;
+  };
+  const auto all = PMP::graphcut_isotropic_remeshing(
+    m, GP::combine(CGAL::parameters::number_of_iterations(6), GP::number_of_greedy_iterations(3), GP::visitor(std::ref(record))));
+  ASSERT_EQ(seen.size(), 9u);
+  EXPECT_FALSE(all.cancelled);
+  for(std::size_t i = 0; i < 9; ++i)
+  {
+    EXPECT_EQ(seen[i].phase, i < 6 ? PMP::Graphcut_remeshing_progress::RELOCATION
+                                   : PMP::Graphcut_remeshing_progress::GREEDY_FITTING);
+    EXPECT_EQ(seen[i].iteration, i < 6 ? i + 1 : i - 5);
+    EXPECT_DOUBLE_EQ(seen[i].energy, all.energies[i + 1]);
+  }
+
+  Mesh n = noisy_sphere(2, 0.03, 0.01, 7);
+  std::size_t calls = 0;
+  auto stop_after_three = [&calls](const PMP::Graphcut_remeshing_progress&) { return ++calls < 3; };
+  const auto stopped = PMP::graphcut_isotropic_remeshing(
+    n, GP::combine(CGAL::parameters::number_of_iterations(6), GP::visitor(std::ref(stop_after_three))));
+  EXPECT_TRUE(stopped.cancelled);
+  EXPECT_EQ(stopped.number_of_iterations, 3u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(n));
+}
+
+// The bar of part 1 on the paper's models, connectivity unchanged, default parameters: valid,
+// same vertex count and Euler characteristic, no new self-intersection, a mean minimum angle at
+// least 3 degrees above the input's, and a Hausdorff distance at most 0.8 times that of CGAL's
+// tangential_relaxation (20 iterations, edges of 35 degrees or more constrained).
+TEST(GraphcutRemeshing, PaperModelsBeatTangentialRelaxation)
+{
+  for(const std::string name : {"fandisk", "cow", "triceratops"})
+  {
+    const Mesh input = load_sample_mesh(name);
+    Mesh m = input;
+    const auto stats = PMP::graphcut_isotropic_remeshing(m, GP::do_connectivity_optimization(false));
+    expect_monotone(stats.energies, name);
+
+    Mesh relaxed = input;
+    auto sharp = relaxed.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
+    auto pinned = relaxed.add_property_map<Mesh::Vertex_index, bool>("v:pinned", false).first;
+    PMP::detect_sharp_edges(relaxed, 35.0, sharp);
+    for(auto e : edges(relaxed))
+      if(sharp[e])
+        pinned[source(e, relaxed)] = pinned[target(e, relaxed)] = true;
+    PMP::tangential_relaxation(relaxed, CGAL::parameters::number_of_iterations(20)
+                                          .edge_is_constrained_map(sharp).vertex_is_constrained_map(pinned));
+
+    const PMP::Mesh_quality_report before = PMP::mesh_quality_report(input), after = PMP::mesh_quality_report(m);
+    const double ours = PMP::relative_surface_distance(input, m).hausdorff;
+    const double theirs = PMP::relative_surface_distance(input, relaxed).hausdorff;
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m)) << name;
+    EXPECT_EQ(num_vertices(m), num_vertices(input)) << name;
+    EXPECT_EQ(num_vertices(m) - num_edges(m) + num_faces(m), num_vertices(input) - num_edges(input) + num_faces(input)) << name;
+    const auto new_pairs = [&] {
+      const auto a = intersecting_pairs(input), b = intersecting_pairs(m);
+      std::size_t n = 0;
+      for(const auto& p : b)
+        n += a.count(p) ? 0 : 1;
+      return n;
+    }();
+    EXPECT_EQ(new_pairs, 0u) << name;
+    EXPECT_GE(after.mean_min_angle, before.mean_min_angle + 3) << name;
+    EXPECT_LE(ours, 0.8 * theirs) << name;
+    std::cout << name << ": mean min angle " << before.mean_min_angle << " -> " << after.mean_min_angle
+              << ", Hausdorff " << ours << " (tangential_relaxation " << theirs << ", ratio " << ours / theirs << ")\n";
+  }
+}
