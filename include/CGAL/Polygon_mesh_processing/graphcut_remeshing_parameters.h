@@ -147,14 +147,22 @@ auto chain(const Named_function_parameters<T, Tag, Base>& first, const NP2& rest
 } // namespace internal
 /// \endcond
 
-/// chains packs of named parameters (\cgal's and the package's) into one
+/// \cond SKIP_IN_MANUAL
 template <typename NP>
 const NP& combine(const NP& np)
 {
   return np;
 }
+/// \endcond
 
-/// chains packs of named parameters (\cgal's and the package's) into one
+/*!
+ * chains packs of named parameters, \cgal's and the package's, into one pack holding all of
+ * their parameters.
+ * \param np1 a pack of named parameters
+ * \param np2 a second pack
+ * \param nps more packs
+ * \return one pack with the parameters of all
+ */
 template <typename NP1, typename NP2, typename... NPs>
 auto combine(const NP1& np1, const NP2& np2, const NPs&... nps)
 {
