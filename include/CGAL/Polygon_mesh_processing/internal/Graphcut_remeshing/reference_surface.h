@@ -9,6 +9,7 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/Simple_cartesian.h>
@@ -71,12 +72,16 @@ public:
   // x - origin is along the normal and eq. (4) is the exact squared distance to the reference.
   Local_frame frame_at_closest_point(const Vector_3d& x, Face& hint) const
   {
+    auto project = [&](Face f, std::array<double, 3>& weights) {
+      const std::array<Vertex, 3> g = face_vertices(f);
+      return closest_point_on_triangle(x, point(g[0]), point(g[1]), point(g[2]), weights);
+    };
     std::array<double, 3> w;
-    std::array<Vertex, 3> t = face_vertices(hint);
-    Vector_3d c = closest_point_on_triangle(x, point(t[0]), point(t[1]), point(t[2]), w);
+    Vector_3d c = project(hint, w);
     double best = (x - c).squaredNorm();
     for(std::size_t guard = 0; guard < m_mesh.number_of_faces(); ++guard)
     {
+      const std::array<Vertex, 3> t = face_vertices(hint);
       Face next_face = hint;
       const int zeros = (w[0] == 0) + (w[1] == 0) + (w[2] == 0);
       if(zeros == 1)
@@ -84,9 +89,8 @@ public:
         // On the edge opposite the vertex of weight 0: look across it.
         const int i = w[0] == 0 ? 0 : (w[1] == 0 ? 1 : 2);
         const auto h = m_mesh.halfedge(t[(i + 1) % 3], t[(i + 2) % 3]);
-        const auto o = m_mesh.opposite(h);
-        if(h != Mesh::null_halfedge() && !m_mesh.is_border(o))
-          next_face = m_mesh.face(o);
+        if(h != Mesh::null_halfedge() && !m_mesh.is_border(m_mesh.opposite(h)))
+          next_face = m_mesh.face(m_mesh.opposite(h));
       }
       else if(zeros == 2)
       {
@@ -96,9 +100,8 @@ public:
         for(auto h : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
           if(!m_mesh.is_border(h))
           {
-            const std::array<Vertex, 3> g = face_vertices(m_mesh.face(h));
             std::array<double, 3> wg;
-            const double d = (x - closest_point_on_triangle(x, point(g[0]), point(g[1]), point(g[2]), wg)).squaredNorm();
+            const double d = (x - project(m_mesh.face(h), wg)).squaredNorm();
             if(d < around)
             {
               around = d;
@@ -108,19 +111,18 @@ public:
       }
       if(next_face == hint)
         break;
-      const std::array<Vertex, 3> g = face_vertices(next_face);
       std::array<double, 3> wg;
-      const Vector_3d cg = closest_point_on_triangle(x, point(g[0]), point(g[1]), point(g[2]), wg);
+      const Vector_3d cg = project(next_face, wg);
       const double d = (x - cg).squaredNorm();
       if(!(d < best))
         break;
       best = d;
       hint = next_face;
-      t = g;
       w = wg;
       c = cg;
     }
 
+    const std::array<Vertex, 3> t = face_vertices(hint);
     Local_frame result;
     result.origin = c;
     const Vector_3d n = area_vector(point(t[0]), point(t[1]), point(t[2]));
@@ -151,11 +153,7 @@ public:
     return Mesh::null_face();
   }
 
-  std::array<Vertex, 3> face_vertices(Face f) const
-  {
-    const auto h = m_mesh.halfedge(f);
-    return {{m_mesh.source(h), m_mesh.target(h), m_mesh.target(m_mesh.next(h))}};
-  }
+  std::array<Vertex, 3> face_vertices(Face f) const { return Graphcut_remeshing::face_vertices(m_mesh, f); }
 
   // Area-weighted vertex normal (unit, or zero for an isolated vertex).
   Vector_3d area_weighted_normal(Vertex v) const

@@ -13,13 +13,12 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Random.h>
 #include <CGAL/property_map.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <array>
@@ -32,9 +31,6 @@ namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace Graphcut_remeshing {
-
-using Work_kernel = CGAL::Simple_cartesian<double>;
-using Work_mesh = CGAL::Surface_mesh<Work_kernel::Point_3>;
 
 struct Remeshing_options
 {
@@ -319,11 +315,7 @@ public:
   const Reference_surface<Work_mesh>& reference() const { return m_reference; }
 
 private:
-  std::array<Vertex, 3> face_vertices(Face f) const
-  {
-    const Halfedge h = m_mesh.halfedge(f);
-    return {{m_mesh.source(h), m_mesh.target(h), m_mesh.target(m_mesh.next(h))}};
-  }
+  std::array<Vertex, 3> face_vertices(Face f) const { return Graphcut_remeshing::face_vertices(m_mesh, f); }
 
   // F of eq. (4) in the frame at the point of the reference triangles closest to x, searched from
   // the triangle `hint`.
