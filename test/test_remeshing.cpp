@@ -274,19 +274,25 @@ TEST(GraphcutRemeshing, UserConstraintsAreHonoured)
   for(auto v : vertices(m))
   {
     if(vcm[v])
+    {
       EXPECT_EQ(m.point(v), input.point(v)) << "constrained vertex " << v << " moved";
+    }
   }
   // Vertices of constrained edges stay on the polyline of constrained input edges.
   for(auto e : edges(m))
-    if(ecm[e])
-      for(auto v : {source(e, m), target(e, m)})
-      {
-        double d = std::numeric_limits<double>::infinity();
-        for(auto g : edges(input))
-          if(ecm[g])
-            d = (std::min)(d, distance_to_segment(m.point(v), input.point(source(g, input)), input.point(target(g, input))));
-        EXPECT_LT(d, 1e-12) << "vertex " << v << " left the constrained polyline";
-      }
+  {
+    if(!ecm[e])
+      continue;
+    for(auto v : {source(e, m), target(e, m)})
+    {
+      double d = std::numeric_limits<double>::infinity();
+      for(auto g : edges(input))
+        if(ecm[g])
+          d = (std::min)(d, distance_to_segment(m.point(v), input.point(source(g, input)),
+                                                input.point(target(g, input))));
+      EXPECT_LT(d, 1e-12) << "vertex " << v << " left the constrained polyline";
+    }
+  }
 }
 
 TEST(GraphcutRemeshing, SameSeedSameResult)

@@ -32,6 +32,10 @@ public:
   using Vertex = typename Mesh::Vertex_index;
   using Face = typename Mesh::Face_index;
 
+  // Triangles whose normals are within 20 degrees (the lower sharp-edge bound) count as one
+  // smooth sheet for closest-point tracking.
+  static constexpr double smooth_cosine = 0.93969262078590838; // cos(20 degrees)
+
   explicit Reference_surface(const Mesh& m) : m_mesh(m) { compute_frames(); }
 
   const Mesh& mesh() const { return m_mesh; }
@@ -109,13 +113,45 @@ public:
             }
           }
       }
-      if(next_face == hint)
-        break;
       std::array<double, 3> wg;
-      const Vector_3d cg = project(next_face, wg);
-      const double d = (x - cg).squaredNorm();
+      Vector_3d cg;
+      double d = best;
+      if(next_face != hint)
+      {
+        cg = project(next_face, wg);
+        d = (x - cg).squaredNorm();
+      }
       if(!(d < best))
-        break;
+      {
+        // Where the reference is smooth and concave a triangle sharing an edge can be closer
+        // although the closest point of this one is not on that edge: look at the three before
+        // stopping. Not across a sharp edge: there the other sheet may be closer (a thin part,
+        // a concave crease) and tracking must stay on the side it came from.
+        next_face = hint;
+        const Vector_3d n = area_vector(point(t[0]), point(t[1]), point(t[2]));
+        for(auto h : halfedges_around_face(m_mesh.halfedge(hint), m_mesh))
+        {
+          const auto o = m_mesh.opposite(h);
+          if(m_mesh.is_border(o))
+            continue;
+          const std::array<Vertex, 3> to = face_vertices(m_mesh.face(o));
+          const Vector_3d no = area_vector(point(to[0]), point(to[1]), point(to[2]));
+          if(!(n.dot(no) > smooth_cosine * n.norm() * no.norm()))
+            continue;
+          std::array<double, 3> wo;
+          const Vector_3d co = project(m_mesh.face(o), wo);
+          const double dn = (x - co).squaredNorm();
+          if(dn < d)
+          {
+            d = dn;
+            next_face = m_mesh.face(o);
+            wg = wo;
+            cg = co;
+          }
+        }
+        if(next_face == hint || !(d < best))
+          break;
+      }
       best = d;
       hint = next_face;
       w = wg;

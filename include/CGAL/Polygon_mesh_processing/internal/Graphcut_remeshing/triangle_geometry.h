@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -59,20 +60,28 @@ inline Vector_3d tangential(const Vector_3d& v, const Vector_3d& n)
   return v - v.dot(n) * n;
 }
 
-// Distance from p to the segment [a, b].
-inline double distance_to_segment(const Vector_3d& p, const Vector_3d& a, const Vector_3d& b)
-{
-  const Vector_3d ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double t = l2 > 0 ? (std::min)(1.0, (std::max)(0.0, (p - a).dot(ab) / l2)) : 0.0;
-  return (p - (a + t * ab)).norm();
-}
-
 // The three angles of triangle (a, b, c), at a, b and c, in radians.
 inline std::array<double, 3> triangle_angles(const Vector_3d& a, const Vector_3d& b,
                                              const Vector_3d& c)
 {
   return {{angle(a, b, c), angle(b, c, a), angle(c, a, b)}};
+}
+
+// The point of segment [a, b] closest to p, with t its parameter from a.
+inline Vector_3d closest_point_on_segment(const Vector_3d& p, const Vector_3d& a, const Vector_3d& b,
+                                          double& t)
+{
+  const Vector_3d ab = b - a;
+  const double l2 = ab.squaredNorm();
+  t = l2 > 0 ? (std::min)(1.0, (std::max)(0.0, (p - a).dot(ab) / l2)) : 0.0;
+  return a + t * ab;
+}
+
+// Distance from p to the segment [a, b].
+inline double distance_to_segment(const Vector_3d& p, const Vector_3d& a, const Vector_3d& b)
+{
+  double t;
+  return (p - closest_point_on_segment(p, a, b, t)).norm();
 }
 
 // The point of triangle (a, b, c) closest to p, with its barycentric coordinates (Voronoi regions
@@ -81,6 +90,31 @@ inline Vector_3d closest_point_on_triangle(const Vector_3d& p, const Vector_3d& 
                                            const Vector_3d& c, std::array<double, 3>& barycentric)
 {
   const Vector_3d ab = b - a, ac = c - a, ap = p - a;
+  // A needle or a cap (area at the rounding level of its edges) has no reliable interior region:
+  // the barycentric weights below would be noise. Its closest point is on its longest sides.
+  const double longest2 = (std::max)({ab.squaredNorm(), ac.squaredNorm(), (c - b).squaredNorm()});
+  if(ab.cross(ac).norm() <= 1e-12 * longest2)
+  {
+    const std::array<const Vector_3d*, 3> corner = {{&a, &b, &c}};
+    double best = std::numeric_limits<double>::infinity();
+    Vector_3d closest = a;
+    for(int i = 0; i < 3; ++i)
+    {
+      const int j = (i + 1) % 3;
+      double t;
+      const Vector_3d q = closest_point_on_segment(p, *corner[i], *corner[j], t);
+      const double d = (p - q).squaredNorm();
+      if(d < best)
+      {
+        best = d;
+        closest = q;
+        barycentric = {{0, 0, 0}};
+        barycentric[i] = 1 - t;
+        barycentric[j] = t;
+      }
+    }
+    return closest;
+  }
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
   if(d1 <= 0 && d2 <= 0) { barycentric = {{1, 0, 0}}; return a; }
   const Vector_3d bp = p - b;
