@@ -110,11 +110,19 @@ double distance_to_segment(const Point& p, const Point& a, const Point& b)
   return GR::distance_to_segment(GR::to_vector(p), GR::to_vector(a), GR::to_vector(b));
 }
 
-void expect_monotone(const std::vector<double>& energies, const std::string& name)
+// The energy never rises from one iteration to the next, except across a connectivity pass,
+// which changes the triangles the energy sums over.
+void expect_monotone(const PMP::Graphcut_remeshing_statistics& stats, const std::string& name)
 {
+  const std::vector<double>& energies = stats.energies;
   ASSERT_GE(energies.size(), 2u);
   for(std::size_t i = 1; i < energies.size(); ++i)
+  {
+    if(std::find(stats.connectivity_passes.begin(), stats.connectivity_passes.end(), i) !=
+       stats.connectivity_passes.end())
+      continue;
     EXPECT_LE(energies[i], energies[i - 1] * (1 + 1e-12)) << name << ": energy rose at iteration " << i;
+  }
 }
 
 } // namespace
@@ -132,7 +140,8 @@ TEST(GraphcutRemeshing, EnergyNeverRises)
       c.mesh, GP::combine(CGAL::parameters::number_of_iterations(40), GP::number_of_greedy_iterations(10)));
     EXPECT_EQ(stats.energies.size(), 51u) << c.name;
     EXPECT_EQ(stats.number_of_iterations, 50u) << c.name;
-    expect_monotone(stats.energies, c.name);
+    expect_monotone(stats, c.name);
+    EXPECT_EQ(stats.connectivity_passes.size(), 8u) << c.name;
     // The optimisation must actually work: moves taken, energy clearly lower.
     EXPECT_GT(stats.number_of_moves, num_vertices(c.mesh)) << c.name;
     EXPECT_LT(stats.energies.back(), 0.99 * stats.energies.front()) << c.name;
@@ -145,8 +154,10 @@ TEST(GraphcutRemeshing, BoxCornersStayAndEdgeVerticesStayOnEdges)
   {
     const Mesh input = jittered_box(1 * scale, 2 * scale, 0.5 * scale, 6, 3);
     Mesh m = input;
+    // Vertex by vertex: the connectivity stays (test_connectivity checks the same with it).
     PMP::graphcut_isotropic_remeshing(m, GP::combine(CGAL::parameters::number_of_iterations(30),
-                                                     GP::number_of_greedy_iterations(5)));
+                                                     GP::number_of_greedy_iterations(5),
+                                                     GP::do_connectivity_optimization(false)));
     const double a = 1 * scale, b = 2 * scale, c = 0.5 * scale, tolerance = 1e-12 * scale;
     std::size_t corners = 0, on_edges = 0, moved = 0;
     for(auto v : vertices(m))
@@ -190,7 +201,8 @@ TEST(GraphcutRemeshing, FandiskFeaturesStayWhereTheyWere)
   const Mesh input = load_sample_mesh("fandisk");
   Mesh m = input;
   PMP::graphcut_isotropic_remeshing(m, GP::combine(CGAL::parameters::number_of_iterations(40),
-                                                   GP::number_of_greedy_iterations(10)));
+                                                   GP::number_of_greedy_iterations(10),
+                                                   GP::do_connectivity_optimization(false)));
   // The input's sharp edges by the same hysteresis as the remesher.
   GR::Work_mesh w;
   for(auto v : vertices(input))
@@ -270,7 +282,8 @@ TEST(GraphcutRemeshing, UserConstraintsAreHonoured)
   PMP::graphcut_isotropic_remeshing(m, GP::combine(CGAL::parameters::number_of_iterations(30)
                                                      .vertex_is_constrained_map(vcm)
                                                      .edge_is_constrained_map(ecm),
-                                                   GP::number_of_greedy_iterations(5)));
+                                                   GP::number_of_greedy_iterations(5),
+                                                   GP::do_connectivity_optimization(false)));
   for(auto v : vertices(m))
   {
     if(vcm[v])
@@ -353,7 +366,7 @@ TEST(GraphcutRemeshing, PaperModelsBeatTangentialRelaxation)
     const Mesh input = load_sample_mesh(name);
     Mesh m = input;
     const auto stats = PMP::graphcut_isotropic_remeshing(m, GP::do_connectivity_optimization(false));
-    expect_monotone(stats.energies, name);
+    expect_monotone(stats, name);
 
     Mesh relaxed = input;
     auto sharp = relaxed.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;

@@ -145,8 +145,14 @@ int main(int argc, char** argv)
       out << ", \"seconds\": " << tools::json_number(seconds) << ", \"energy\": [";
       for(std::size_t i = 0; i < stats.energies.size(); ++i)
         out << (i ? ", " : "") << std::setprecision(17) << stats.energies[i];
+      out << "], \"connectivity_passes\": [";
+      for(std::size_t i = 0; i < stats.connectivity_passes.size(); ++i)
+        out << (i ? ", " : "") << stats.connectivity_passes[i];
       out << "], \"iterations\": " << stats.number_of_iterations << ", \"moves\": " << stats.number_of_moves
-          << "}\n";
+          << ", \"flips\": " << stats.number_of_flips << ", \"splits\": " << stats.number_of_splits
+          << ", \"collapses\": " << stats.number_of_collapses
+          << ", \"vertex_splits\": " << stats.number_of_vertex_splits
+          << ", \"undone_passes\": " << stats.number_of_undone_passes << "}\n";
       if(!out)
         throw tools::Input_error(json_file + ": cannot write");
     }

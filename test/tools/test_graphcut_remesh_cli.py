@@ -49,9 +49,17 @@ with tempfile.TemporaryDirectory() as tmp:
     check(sorted(j['output'].keys()) == quality_keys, "output keys")
     check(sorted(j['distance'].keys()) == ['hausdorff', 'rms'], "distance keys")
     check(len(j['energy']) == 1 + 12 + 3, "energy list has %d entries" % len(j['energy']))
-    check(all(b <= a * (1 + 1e-12) for a, b in zip(j['energy'], j['energy'][1:])), "energy rose")
+    # Connectivity passes after iterations 5 and 10 change the triangles; elsewhere U never rises.
+    check(j.get('connectivity_passes') == [5, 10], "passes %r" % j.get('connectivity_passes'))
+    check(all(b <= a * (1 + 1e-12) for i, (a, b) in enumerate(zip(j['energy'], j['energy'][1:]))
+              if i + 1 not in j['connectivity_passes']), "energy rose")
     check(j['energy'][-1] < j['energy'][0], "energy did not fall")
-    check(j['output']['vertices'] == j['input']['vertices'], "vertex count changed")
+    for key in ('flips', 'splits', 'collapses', 'vertex_splits'):
+        check(isinstance(j.get(key), int) and j[key] >= 0, "JSON lacks the count of %s" % key)
+    check(j['flips'] > 0 and j['splits'] + j['collapses'] + j['vertex_splits'] > 0,
+          "no connectivity change: %r" % {k: j[k] for k in ('flips', 'splits', 'collapses', 'vertex_splits')})
+    check(abs(j['output']['vertices'] - j['input']['vertices']) < 0.15 * j['input']['vertices'],
+          "vertex count %d -> %d" % (j['input']['vertices'], j['output']['vertices']))
     check(j['output']['mean_min_angle'] > j['input']['mean_min_angle'], "angles did not improve")
     check(0 < j['distance']['hausdorff'] < 0.01, "hausdorff %r" % j['distance'])
 
@@ -63,8 +71,13 @@ with tempfile.TemporaryDirectory() as tmp:
     check(x == y, "same seed, different output")
     check(x != z, "different seed, same output")
 
-    r = run([mesh, out2, '--quiet', '--no-connectivity'] + short)
+    r = run([mesh, out2, '--quiet', '--no-connectivity', '--json', report] + short)
     check(r.returncode == 0 and r.stdout == '' and r.stderr == '', "--quiet printed %r %r" % (r.stdout, r.stderr))
+    with open(report) as f:
+        j = json.load(f)
+    check(j['output']['vertices'] == j['input']['vertices'], "--no-connectivity changed the vertex count")
+    check(j['connectivity_passes'] == [] and j['flips'] == 0, "--no-connectivity ran a pass")
+    check(all(b <= a * (1 + 1e-12) for a, b in zip(j['energy'], j['energy'][1:])), "energy rose")
 
     r = run(['--help'])
     check(r.returncode == 0, "--help exit code")

@@ -11,6 +11,8 @@
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/assertions.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
@@ -49,15 +51,20 @@ struct Default_visitor
  * iterations along the energy gradient. The input, scaled into the unit box, is kept as the
  * reference surface; sharp edges (by the hysteresis of `sharp_angle_bounds`), border edges and
  * user-constrained edges are features: their vertices slide along the feature polylines of the
- * input, corners (three or more feature edges, or one) and constrained vertices do not move.
+ * input, corners (three or more feature edges) and constrained vertices do not move; the end of a
+ * feature line slides along its one feature edge.
  *
  * The energy of eq. (1) never increases from one iteration to the next: the cut minimises an
  * upper bound of the energy that is exact at the current positions. No move creates a degenerate
  * triangle or turns a triangle over.
  *
- * The connectivity optimisation of section 3 (flips, splits, collapses and relaxation) is the
- * subject of the next version of the package: this version relocates vertices only and leaves the
- * connectivity unchanged, whatever `do_connectivity_optimization` says.
+ * Every `connectivity_period` iterations of the first phase, the connectivity is improved as in
+ * the paper's section 3: edge flips, splits of long edges, collapses of short edges in flat
+ * regions and vertex splits, each kept only when it improves its own criterion and only where the
+ * valence can improve, then a tangential relaxation of the vertex positions. Feature edges are
+ * never flipped or collapsed, and no edge next to one is collapsed. The number of vertices adapts
+ * to the local curvature but stays of the order of the input's. When the connectivity changes,
+ * `tmesh` is rebuilt: its elements are replaced, and the constrained maps are updated.
  *
  * @tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
  * @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters", which may
@@ -81,14 +88,16 @@ struct Default_visitor
  *   \cgalParamNEnd
  *   \cgalParamNBegin{edge_is_constrained_map}
  *     \cgalParamDescription{a property map telling which edges are user features: never flipped
- *                           or collapsed; their vertices slide along them}
- *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+ *                           or collapsed; their vertices slide along them. Updated when the
+ *                           connectivity changes}
+ *     \cgalParamType{a class model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
  *                    as key type and `bool` as value type}
  *     \cgalParamDefault{no edge is constrained}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{vertex_is_constrained_map}
- *     \cgalParamDescription{a property map telling which vertices never move}
- *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+ *     \cgalParamDescription{a property map telling which vertices never move; updated
+ *                           when the connectivity changes}
+ *     \cgalParamType{a class model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
  *                    as key type and `bool` as value type}
  *     \cgalParamDefault{no vertex is constrained}
  *   \cgalParamNEnd
@@ -154,8 +163,8 @@ struct Default_visitor
  *     \cgalParamDefault{a visitor that never stops}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{graphcut_parameters::do_connectivity_optimization}
- *     \cgalParamDescription{whether to run the connectivity optimisation (not yet part of this
- *                           version, which never changes the connectivity)}
+ *     \cgalParamDescription{whether to run the connectivity optimisation of section 3; with
+ *                           `false` the connectivity of `tmesh` is left as it is}
  *     \cgalParamType{`bool`}
  *     \cgalParamDefault{`true`}
  *   \cgalParamNEnd
@@ -201,6 +210,10 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
   options.initial_temperature = choose_parameter(get_parameter(np, GNP::initial_temperature), 10.0);
   options.cooling_factor = choose_parameter(get_parameter(np, GNP::cooling_factor), 0.95);
   options.smoothing_step = choose_parameter(get_parameter(np, GNP::smoothing_step), 0.06);
+  options.do_connectivity_optimization =
+    choose_parameter(get_parameter(np, GNP::do_connectivity_optimization), true);
+  options.connectivity_period =
+    choose_parameter(get_parameter(np, GNP::connectivity_period), std::size_t(5));
   const std::pair<double, double> sharp_bounds =
     choose_parameter(get_parameter(np, GNP::sharp_angle_bounds), std::make_pair(20.0, 35.0));
   auto visitor = choose_parameter(get_parameter(np, GNP::visitor), GR::Default_visitor());
@@ -236,27 +249,80 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
   for(auto e : work.edges())
     if(work.is_border(e))
       feature_edge[std::size_t(e)] = 1;
+  std::vector<char> user_edge(feature_edge.size(), 0);
   for(edge_descriptor e : edges(tmesh))
     if(get(ecm, e))
     {
       const auto h = halfedge(e, tmesh);
       const auto wh = work.halfedge(to_work(source(h, tmesh)), to_work(target(h, tmesh)));
       feature_edge[std::size_t(work.edge(wh))] = 1;
+      user_edge[std::size_t(work.edge(wh))] = 1;
     }
   std::vector<GR::Vertex_kind> kind = GR::classify_vertices(work, feature_edge, constrained_vertex);
 
   GR::Graphcut_remesher remesher(work, feature_edge, kind, options);
   Graphcut_remeshing_statistics stats = remesher.run(visitor);
 
-  // Back to the input's scale. Vertices that never moved keep their exact input coordinates.
+  if(stats.number_of_flips + stats.number_of_splits + stats.number_of_collapses +
+       stats.number_of_vertex_splits == 0)
+  {
+    // Same connectivity: back to the input's scale, vertex by vertex. Vertices that never moved
+    // keep their exact input coordinates.
+    for(std::size_t i = 0; i < input_vertices.size(); ++i)
+    {
+      const auto w = to_work(input_vertices[i]);
+      const GR::Vector_3d unit = GR::to_vector(work.point(w));
+      if(unit == normalization.to_unit(input_points[i]))
+        continue;
+      const GR::Vector_3d p = normalization.from_unit(unit);
+      put(vpm, input_vertices[i], Point(p.x(), p.y(), p.z()));
+    }
+    return stats;
+  }
+
+  // New connectivity: `tmesh` is emptied element by element (so that the property maps of its
+  // owner stay alive) and receives the working mesh at the input's scale. Feature and fixed
+  // vertices are never removed, so a working vertex of an input index still at its input
+  // position is that input vertex, and keeps its exact coordinates.
+  std::vector<Point> exact(work.num_vertices());
+  std::vector<char> is_exact(work.num_vertices(), 0);
   for(std::size_t i = 0; i < input_vertices.size(); ++i)
   {
     const auto w = to_work(input_vertices[i]);
-    const GR::Vector_3d unit = GR::to_vector(work.point(w));
-    if(unit == normalization.to_unit(input_points[i]))
-      continue;
-    const GR::Vector_3d p = normalization.from_unit(unit);
-    put(vpm, input_vertices[i], Point(p.x(), p.y(), p.z()));
+    if(!work.is_removed(w) && GR::to_vector(work.point(w)) == normalization.to_unit(input_points[i]))
+    {
+      exact[std::size_t(w)] = get(vpm, input_vertices[i]);
+      is_exact[std::size_t(w)] = 1;
+    }
+  }
+  for(auto w : work.vertices())
+    work.point(w) = [&] {
+      const GR::Vector_3d p = normalization.from_unit(GR::to_vector(work.point(w)));
+      return GR::Work_kernel::Point_3(p.x(), p.y(), p.z());
+    }();
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> old_faces(faces(tmesh).begin(),
+                                                                                   faces(tmesh).end());
+  for(auto f : old_faces)
+    CGAL::Euler::remove_face(halfedge(f, tmesh), tmesh);
+  std::vector<std::pair<GR::Work_mesh::Vertex_index, vertex_descriptor> > v2v;
+  std::vector<std::pair<GR::Work_mesh::Halfedge_index,
+                        typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> > h2h;
+  CGAL::copy_face_graph(work, tmesh,
+                        parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v))
+                          .halfedge_to_halfedge_output_iterator(std::back_inserter(h2h)),
+                        parameters::vertex_point_map(vpm));
+  for(const auto& p : v2v)
+  {
+    if(is_exact[std::size_t(p.first)])
+      put(vpm, p.second, exact[std::size_t(p.first)]);
+    const std::size_t i = std::size_t(p.first);
+    put(vcm, p.second, i < constrained_vertex.size() && constrained_vertex[i] && !work.is_removed(p.first));
+  }
+  // User-constrained edges are never flipped, split or collapsed: they keep their indices.
+  for(const auto& p : h2h)
+  {
+    const std::size_t i = std::size_t(work.edge(p.first));
+    put(ecm, edge(p.second, tmesh), i < user_edge.size() && user_edge[i] != 0);
   }
   return stats;
 }

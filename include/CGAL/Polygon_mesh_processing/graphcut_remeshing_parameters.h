@@ -67,6 +67,20 @@ struct Graphcut_remeshing_statistics
   std::size_t number_of_iterations = 0;
   /// the number of vertex moves taken by the graph cuts, all iterations together
   std::size_t number_of_moves = 0;
+  /// the iterations (counted from 1 over both phases) after which a connectivity pass ran; the
+  /// energy never rises from one iteration to the next except across these, where the number
+  /// of triangles changes
+  std::vector<std::size_t> connectivity_passes;
+  /// the edge flips of the connectivity passes, all passes together
+  std::size_t number_of_flips = 0;
+  /// the edge splits of the connectivity passes
+  std::size_t number_of_splits = 0;
+  /// the edge collapses of the connectivity passes
+  std::size_t number_of_collapses = 0;
+  /// the vertex splits of the connectivity passes
+  std::size_t number_of_vertex_splits = 0;
+  /// the connectivity passes undone because they would have made the mesh self-intersect
+  std::size_t number_of_undone_passes = 0;
   /// `true` if the visitor stopped the run
   bool cancelled = false;
 };

@@ -68,8 +68,8 @@ std::vector<char> detect_sharp_edges(const Mesh& m, double theta_false, double t
 enum class Vertex_kind : char
 {
   free_vertex,    // moves on the surface
-  feature_vertex, // slides along its feature polyline (exactly two feature edges)
-  fixed_vertex    // never moves: corners (three or more feature edges), feature ends, user constraints
+  feature_vertex, // slides along its feature polyline (one or two feature edges, section 4.2)
+  fixed_vertex    // never moves: corners (three or more feature edges), user constraints
 };
 
 template <typename Mesh>
@@ -83,10 +83,10 @@ std::vector<Vertex_kind> classify_vertices(const Mesh& m, const std::vector<char
     if(m.halfedge(v) != Mesh::null_halfedge())
       for(auto h : halfedges_around_target(m.halfedge(v), m))
         count += feature_edge[std::size_t(m.edge(h))] ? 1 : 0;
-    if(constrained_vertex[std::size_t(v)] || (count != 0 && count != 2) ||
+    if(constrained_vertex[std::size_t(v)] || count >= 3 ||
        m.halfedge(v) == Mesh::null_halfedge())
       kind[std::size_t(v)] = Vertex_kind::fixed_vertex;
-    else if(count == 2)
+    else if(count != 0)
       kind[std::size_t(v)] = Vertex_kind::feature_vertex;
   }
   return kind;

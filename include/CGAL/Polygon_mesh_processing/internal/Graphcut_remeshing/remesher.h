@@ -10,6 +10,7 @@
 #include <CGAL/Polygon_mesh_processing/graphcut_remeshing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/binary_graph_cut.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/candidates.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/connectivity.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
@@ -22,6 +23,9 @@
 
 #include <algorithm>
 #include <array>
+#ifdef CGAL_GRAPHCUT_REMESHING_VERBOSE
+#include <iostream>
+#endif
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -41,6 +45,12 @@ struct Remeshing_options
   double cooling_factor = 0.95;
   double smoothing_step = 0.06; // gamma of section 2.3
   unsigned int random_seed = 0;
+  bool do_connectivity_optimization = true;
+  std::size_t connectivity_period = 5;
+  // The largest distance (unit box) a chord of the target edge length may keep from a curved
+  // reference; it shortens the target length where the surface is curved (section 3.1's e_min,
+  // e_max depend on the local curvature).
+  double sizing_tolerance = 3e-3;
 };
 
 class Graphcut_remesher
@@ -58,20 +68,24 @@ public:
   Graphcut_remesher(Work_mesh& mesh, std::vector<char> feature_edge, std::vector<Vertex_kind> kind,
                     const Remeshing_options& options)
     : m_mesh(mesh), m_reference_mesh(mesh), m_reference(m_reference_mesh),
-      m_feature_edge(std::move(feature_edge)), m_kind(std::move(kind)),
-      m_polylines(m_reference_mesh, m_feature_edge, m_kind), m_options(options),
+      m_reference_feature_edge(std::move(feature_edge)), m_reference_kind(std::move(kind)),
+      m_polylines(m_reference_mesh, m_reference_feature_edge, m_reference_kind), m_options(options),
       m_rng(options.random_seed)
   {
-    const std::size_t n = m_mesh.number_of_vertices();
-    m_closest.resize(n);
+    // The working mesh starts as the reference, index for index.
+    m_state.feature_edge = m_reference_feature_edge;
+    m_state.kind = m_reference_kind;
+    const std::size_t n = m_mesh.num_vertices();
+    m_state.closest.resize(n);
     m_location.resize(n);
-    m_vertex_hint.resize(n);
-    m_face_hint.resize(m_mesh.number_of_faces());
+    m_state.vertex_hint.resize(n);
+    m_state.frozen.assign(n, 0);
+    m_state.face_hint.resize(m_mesh.num_faces());
     for(Face f : m_mesh.faces())
-      m_face_hint[std::size_t(f)] = f; // the working mesh starts as the reference
-    m_feature_edge_slot.assign(m_mesh.number_of_edges(), Binary_graph_cut::none);
+      m_state.face_hint[std::size_t(f)] = f;
+    m_feature_edge_slot.assign(m_mesh.num_edges(), Binary_graph_cut::none);
     for(Edge e : m_mesh.edges())
-      if(m_feature_edge[std::size_t(e)])
+      if(m_state.feature_edge[std::size_t(e)])
       {
         m_feature_edge_slot[std::size_t(e)] = m_feature_edges.size();
         m_feature_edges.push_back(e);
@@ -83,16 +97,39 @@ public:
     for(auto& p : m_input_intersections)
       p = ordered(p);
     std::sort(m_input_intersections.begin(), m_input_intersections.end());
+    // Faces the input already made intersect are left to the relocation: no connectivity change
+    // touches them, so their indices, and the list above, stay valid.
+    m_intersection_frozen.assign(n, 0);
+    for(const auto& p : m_input_intersections)
+      for(Face f : {p.first, p.second})
+        for(Vertex u : face_vertices(f))
+          m_intersection_frozen[std::size_t(u)] = 1;
+    double total = 0;
+    for(Edge e : m_mesh.edges())
+      total += (position(m_mesh.source(m_mesh.halfedge(e))) - position(m_mesh.target(m_mesh.halfedge(e)))).norm();
+    m_sizing.mean_length = m_mesh.number_of_edges() > 0 ? total / double(m_mesh.number_of_edges()) : 0;
+    m_sizing.tolerance = m_options.sizing_tolerance;
+#ifdef CGAL_GRAPHCUT_REMESHING_VERBOSE
+    {
+      std::size_t count[3] = {0, 0, 0}, features = 0;
+      for(Vertex v : m_mesh.vertices())
+        ++count[int(kind_of(v))];
+      for(Edge e : m_mesh.edges())
+        features += m_state.feature_edge[std::size_t(e)] ? 1 : 0;
+      std::cerr << count[0] << " free, " << count[1] << " feature, " << count[2] << " fixed vertices; "
+                << features << " feature edges\n";
+    }
+#endif
     for(Vertex v : m_mesh.vertices())
     {
-      m_closest[std::size_t(v)] = v;
-      m_vertex_hint[std::size_t(v)] = m_reference.incident_face(v);
+      m_state.closest[std::size_t(v)] = v;
+      m_state.vertex_hint[std::size_t(v)] = m_reference.incident_face(v);
       if(kind_of(v) == Vertex_kind::feature_vertex)
         m_location[std::size_t(v)] = m_polylines.at_vertex(v);
     }
   }
 
-  Vertex_kind kind_of(Vertex v) const { return m_kind[std::size_t(v)]; }
+  Vertex_kind kind_of(Vertex v) const { return m_state.kind[std::size_t(v)]; }
 
   Vector_3d position(Vertex v) const { return to_vector(m_mesh.point(v)); }
 
@@ -133,6 +170,13 @@ public:
         const double t = temperature(m_options.initial_temperature, m_options.cooling_factor, k);
         stats.number_of_moves += relocate(t, greedy);
         ++stats.number_of_iterations;
+        // Section 3, every connectivity_period iterations of the first phase.
+        if(!greedy && m_options.do_connectivity_optimization && m_options.connectivity_period > 0 &&
+           k % m_options.connectivity_period == 0)
+        {
+          connectivity_pass(stats);
+          stats.connectivity_passes.push_back(stats.number_of_iterations);
+        }
         stats.energies.push_back(energy());
 
         Graphcut_remeshing_progress progress;
@@ -157,7 +201,7 @@ public:
     update_tracking();
 
     // Candidates.
-    const std::size_t n = m_mesh.number_of_vertices();
+    const std::size_t n = m_mesh.num_vertices();
     std::vector<std::size_t> variable(n, Binary_graph_cut::none);
     std::vector<Vertex> moving;
     std::vector<Vector_3d> candidate;
@@ -314,7 +358,70 @@ public:
 
   const Reference_surface<Work_mesh>& reference() const { return m_reference; }
 
+  // Section 3 once: local changes then relaxation. Should they make the mesh self-intersect, the
+  // pass is undone and tried again with the region around the new intersections left alone, in
+  // this pass and the next ones.
+  void connectivity_pass(Graphcut_remeshing_statistics& stats)
+  {
+    std::vector<Box>& keep_out = m_keep_out;
+    for(int attempt = 0; attempt < 3; ++attempt)
+    {
+      const Work_mesh mesh_before = m_mesh;
+      const Tracking_state state_before = m_state;
+      m_state.frozen = m_intersection_frozen;
+      m_state.frozen.resize(m_mesh.num_vertices(), 0);
+      for(Vertex v : m_mesh.vertices())
+        for(const Box& b : keep_out)
+          if(b.contains(position(v)))
+            m_state.frozen[std::size_t(v)] = 1;
+      Connectivity_optimizer optimizer(m_mesh, m_reference, m_state, m_sizing);
+      const Connectivity_counts counts = optimizer.run();
+      m_intersection_frozen.resize(m_mesh.num_vertices(), 0);
+      m_location.resize(m_mesh.num_vertices());
+      m_feature_edge_slot.resize(m_mesh.num_edges(), Binary_graph_cut::none);
+      const std::vector<std::pair<Face, Face> > fresh = new_self_intersections();
+#ifdef CGAL_GRAPHCUT_REMESHING_VERBOSE
+      std::cerr << "connectivity pass, attempt " << attempt << ": " << counts.flips << " flips, "
+                << counts.splits << " splits, " << counts.collapses << " collapses, "
+                << counts.vertex_splits << " vertex splits, " << counts.relaxed << " relaxed, "
+                << fresh.size() << " new intersecting pairs\n";
+#endif
+      if(fresh.empty())
+      {
+        stats.number_of_flips += counts.flips;
+        stats.number_of_splits += counts.splits;
+        stats.number_of_collapses += counts.collapses;
+        stats.number_of_vertex_splits += counts.vertex_splits;
+        return;
+      }
+      for(const auto& pair : fresh)
+        for(Face f : {pair.first, pair.second})
+        {
+          Box b;
+          for(Vertex u : face_vertices(f))
+            b.add(position(u));
+          b.grow(2 * m_sizing.mean_length);
+          keep_out.push_back(b);
+        }
+      m_mesh = mesh_before;
+      m_state = state_before;
+      ++stats.number_of_undone_passes;
+    }
+  }
+
 private:
+  struct Box
+  {
+    Vector_3d low = Vector_3d::Constant(std::numeric_limits<double>::infinity());
+    Vector_3d high = Vector_3d::Constant(-std::numeric_limits<double>::infinity());
+    void add(const Vector_3d& p) { low = low.cwiseMin(p); high = high.cwiseMax(p); }
+    void grow(double r) { low.array() -= r; high.array() += r; }
+    bool contains(const Vector_3d& p) const
+    {
+      return (p.array() >= low.array()).all() && (p.array() <= high.array()).all();
+    }
+  };
+
   std::array<Vertex, 3> face_vertices(Face f) const { return Graphcut_remeshing::face_vertices(m_mesh, f); }
 
   // F of eq. (4) in the frame at the point of the reference triangles closest to x, searched from
@@ -331,7 +438,7 @@ private:
   {
     if(kind_of(v) != Vertex_kind::free_vertex)
       return 0;
-    return m_options.weights.lambda_data * squared_distance(x, m_vertex_hint[std::size_t(v)]);
+    return m_options.weights.lambda_data * squared_distance(x, m_state.vertex_hint[std::size_t(v)]);
   }
 
   // The terms of eq. (1) that belong to triangle f at positions (a, b, c): its shape, and beyond
@@ -341,7 +448,7 @@ private:
   {
     return m_options.weights.lambda_shape * shape_energy(a, b, c) +
            m_options.weights.face_data_weight * m_options.weights.lambda_data *
-             squared_distance((a + b + c) / 3, m_face_hint[std::size_t(f)]);
+             squared_distance((a + b + c) / 3, m_state.face_hint[std::size_t(f)]);
   }
 
   // Beyond the paper: the data term at the midpoint of the i-th feature edge (a, b). Feature
@@ -380,14 +487,14 @@ private:
       if(kind_of(v) != Vertex_kind::free_vertex)
         continue;
       const Vector_3d x = position(v);
-      m_closest[std::size_t(v)] = m_reference.closest_vertex(x, m_closest[std::size_t(v)]);
-      m_reference.frame_at_closest_point(x, m_vertex_hint[std::size_t(v)]);
+      m_state.closest[std::size_t(v)] = m_reference.closest_vertex(x, m_state.closest[std::size_t(v)]);
+      m_reference.frame_at_closest_point(x, m_state.vertex_hint[std::size_t(v)]);
     }
     for(Face f : m_mesh.faces())
     {
       const std::array<Vertex, 3> t = face_vertices(f);
       m_reference.frame_at_closest_point((position(t[0]) + position(t[1]) + position(t[2])) / 3,
-                                         m_face_hint[std::size_t(f)]);
+                                         m_state.face_hint[std::size_t(f)]);
     }
     for(std::size_t i = 0; i < m_feature_edges.size(); ++i)
     {
@@ -417,7 +524,7 @@ private:
     if(kind_of(v) == Vertex_kind::feature_vertex)
       return propose_on_feature(v, x, link, before, temperature, greedy, out, out_location);
 
-    const Local_frame& frame = m_reference.frame(m_closest[std::size_t(v)]);
+    const Local_frame& frame = m_reference.frame(m_state.closest[std::size_t(v)]);
     const double sigma = freedom_radius(temperature, ring_radius(x, link), frame.min_radius());
     if(!(sigma > 0))
       return false;
@@ -431,7 +538,7 @@ private:
     // the candidate back onto the reference triangles keeps the data term near zero, so the shape
     // term alone decides, as the paper intends its tangent moves to.
     auto on_surface = [&](const Vector_3d& c) {
-      Face hint = m_vertex_hint[std::size_t(v)];
+      Face hint = m_state.vertex_hint[std::size_t(v)];
       return m_reference.frame_at_closest_point(c, hint).origin;
     };
 
@@ -497,7 +604,7 @@ private:
       Vector_3d middle = Vector_3d::Zero();
       int count = 0;
       for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
-        if(m_feature_edge[std::size_t(m_mesh.edge(h))])
+        if(m_state.feature_edge[std::size_t(m_mesh.edge(h))])
         {
           middle += position(m_mesh.source(h));
           ++count;
@@ -528,14 +635,15 @@ private:
   Work_mesh& m_mesh;
   const Work_mesh m_reference_mesh;
   Reference_surface<Work_mesh> m_reference;
-  std::vector<char> m_feature_edge;
-  std::vector<Vertex_kind> m_kind;
+  const std::vector<char> m_reference_feature_edge;   // by reference edge
+  const std::vector<Vertex_kind> m_reference_kind;    // by reference vertex
   Polylines m_polylines;
   Remeshing_options m_options;
   CGAL::Random m_rng;
-  std::vector<Vertex> m_closest;     // y_s0 of each vertex: its frame gives the tangent plane and rho
-  std::vector<Face> m_vertex_hint;   // reference triangle nearest to each vertex
-  std::vector<Face> m_face_hint;     // reference triangle nearest to each face's centroid
+  Tracking_state m_state;            // kinds, y_s0 (its frame gives the tangent plane and rho), hints
+  Sizing m_sizing;
+  std::vector<char> m_intersection_frozen; // by vertex: on a face the input made intersect
+  std::vector<Box> m_keep_out;             // regions where connectivity changes made intersections
   std::vector<Edge> m_feature_edges; // the feature edges of the working mesh
   std::vector<std::size_t> m_feature_edge_slot; // by edge index: position in m_feature_edges
   std::vector<Face> m_edge_hint;     // reference triangle nearest to each feature edge's midpoint

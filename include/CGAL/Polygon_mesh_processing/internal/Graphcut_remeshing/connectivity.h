@@ -1,0 +1,665 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Section 3: smooth local changes of the connectivity (edge flips, splits, collapses, then vertex
+// splits), each kept only when it improves its own criterion, and the relaxation of the vertex
+// positions. Only free vertices (not on a feature) are touched, so sharp, border and constrained
+// edges are never flipped or collapsed and no collapse happens next to one.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_CONNECTIVITY_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_CONNECTIVITY_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/candidates.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdlib>
+#include <queue>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Graphcut_remeshing {
+
+// Harmonic mean of two scale-invariant qualities of Shewchuk's "What is a good linear finite
+// element", both 1 for an equilateral triangle and 0 for a degenerate one: the radius ratio 2r/R
+// (interpolation) and 4 sqrt(3) area / sum of squared edges (conditioning). The split criterion.
+inline double split_quality(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c)
+{
+  const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
+  const double twice_area = area_vector(a, b, c).norm();
+  const double s = la + lb + lc;
+  if(!(twice_area > 0) || !(s > 0))
+    return 0;
+  // r = area / half-perimeter, R = la lb lc / (4 area): 2r/R = 8 area^2 / (s la lb lc / ... )
+  const double area = twice_area / 2;
+  const double interpolation = 16 * area * area / (s * la * lb * lc);
+  const double conditioning = 4 * std::sqrt(3.0) * area / (la * la + lb * lb + lc * lc);
+  return 2 * interpolation * conditioning / (interpolation + conditioning);
+}
+
+inline double smallest_angle(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c)
+{
+  const std::array<double, 3> angles = triangle_angles(a, b, c);
+  return (std::min)({angles[0], angles[1], angles[2]});
+}
+
+struct Connectivity_counts
+{
+  std::size_t flips = 0;
+  std::size_t splits = 0;
+  std::size_t collapses = 0;
+  std::size_t vertex_splits = 0;
+  std::size_t relaxed = 0;
+};
+
+// The target edge length at a point of the reference: the mean edge length of the input, shorter
+// where the surface is curved so that a chord of that length stays within `tolerance` of it
+// (l = sqrt(6 tolerance rho - 3 tolerance^2)), never below half the mean.
+struct Sizing
+{
+  double mean_length = 0;
+  double tolerance = 1e-3;
+
+  double length(const Local_frame& f) const
+  {
+    const double rho = f.min_radius();
+    if(!std::isfinite(rho))
+      return mean_length;
+    const double l2 = 6 * tolerance * rho - 3 * tolerance * tolerance;
+    const double curved = l2 > 0 ? std::sqrt(l2) : 0;
+    return (std::max)(0.5 * mean_length, (std::min)(mean_length, curved));
+  }
+};
+
+// The state of the working mesh shared with the relocation: vertex kinds and the reference
+// elements each vertex and face is tracked to, all indexed by the working mesh's indices.
+struct Tracking_state
+{
+  std::vector<char> feature_edge;            // by edge: sharp, border or user-constrained
+  std::vector<Vertex_kind> kind;             // by vertex
+  std::vector<Work_mesh::Vertex_index> closest; // by vertex: y_s0
+  std::vector<Work_mesh::Face_index> vertex_hint; // by vertex: nearest reference triangle
+  std::vector<Work_mesh::Face_index> face_hint;   // by face: nearest reference triangle of its centroid
+  std::vector<char> frozen;                  // by vertex: no connectivity change may touch it
+};
+
+class Connectivity_optimizer
+{
+  using Vertex = Work_mesh::Vertex_index;
+  using Halfedge = Work_mesh::Halfedge_index;
+  using Edge = Work_mesh::Edge_index;
+  using Face = Work_mesh::Face_index;
+
+public:
+  // Collapses only where every dihedral angle around the edge is below this (section 3.1).
+  static constexpr double flat_dihedral = 10 * pi / 180;
+  // A valence-improving flip whose six angles stay above this is kept (see flip_gain).
+  static constexpr double flip_angle_floor = 25 * pi / 180;
+
+  Connectivity_optimizer(Work_mesh& mesh, const Reference_surface<Work_mesh>& reference,
+                         Tracking_state& state, const Sizing& sizing)
+    : m_mesh(mesh), m_reference(reference), m_state(state), m_sizing(sizing)
+  {
+    fit_arrays();
+  }
+
+  // One pass of section 3: flips, splits, collapses, vertex splits, then relaxation.
+  Connectivity_counts run()
+  {
+    Connectivity_counts counts;
+    counts.flips = flip_edges();
+    counts.splits = split_edges();
+    counts.collapses = collapse_edges();
+    counts.vertex_splits = split_vertices();
+    counts.relaxed = relax();
+    return counts;
+  }
+
+  // --- edge flips: the smallest of the six angles must grow, the valence deviation must fall ---
+
+  // The gain in smallest angle of flipping e, or a non-positive value when e may not be flipped.
+  double flip_gain(Edge e) const
+  {
+    if(!flippable(e))
+      return 0;
+    const Halfedge h = m_mesh.halfedge(e), o = m_mesh.opposite(h);
+    const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
+    const Vertex c = m_mesh.target(m_mesh.next(h)), d = m_mesh.target(m_mesh.next(o));
+    if(c == d || m_mesh.halfedge(c, d) != Work_mesh::null_halfedge())
+      return 0;
+    if(m_mesh.degree(a) < 4 || m_mesh.degree(b) < 4)
+      return 0;
+    const int change = deviation_change(a, -1) + deviation_change(b, -1) + deviation_change(c, +1) +
+                       deviation_change(d, +1);
+    if(change >= 0)
+      return 0;
+    const Vector_3d pa = position(a), pb = position(b), pc = position(c), pd = position(d);
+    // (a, b, c) and (b, a, d) become (a, d, c) and (d, b, c).
+    if(!acceptable(pa, pd, pc, a) || !acceptable(pd, pb, pc, b))
+      return 0;
+    // The new edge must not leave the reference more than the old one did.
+    const double before = distance_to_reference((pa + pb) / 2, a);
+    const double after = distance_to_reference((pc + pd) / 2, c);
+    if(after > (std::max)(before, m_sizing.tolerance))
+      return 0;
+    const double old_min = (std::min)(smallest_angle(pa, pb, pc), smallest_angle(pb, pa, pd));
+    const double new_min = (std::min)(smallest_angle(pa, pd, pc), smallest_angle(pd, pb, pc));
+    // Beyond the paper: a flip that makes the valence more regular is also kept when its
+    // triangles stay well shaped; the relocation then improves them (the min-angle rule alone
+    // leaves most irregular vertices).
+    if(new_min >= flip_angle_floor)
+      return (std::max)(new_min - old_min, 0.0) + 1e-3 * (new_min - flip_angle_floor + 1e-9);
+    return new_min - old_min;
+  }
+
+  std::size_t flip_edges()
+  {
+    std::size_t done = 0;
+    run_queue([&](Edge e) { return flip_gain(e); },
+              [&](Edge e) {
+                const Halfedge h = m_mesh.halfedge(e);
+                std::vector<Vertex> touched{{m_mesh.source(h), m_mesh.target(h),
+                                             m_mesh.target(m_mesh.next(h)),
+                                             m_mesh.target(m_mesh.next(m_mesh.opposite(h)))}};
+                CGAL::Euler::flip_edge(h, m_mesh);
+                for(Face f : {m_mesh.face(h), m_mesh.face(m_mesh.opposite(h))})
+                  m_state.face_hint[std::size_t(f)] = m_state.vertex_hint[std::size_t(m_mesh.target(h))];
+                ++done;
+                return touched;
+              });
+    return done;
+  }
+
+  // --- edge splits of long edges: the worst split quality must improve ---
+
+  double split_gain(Edge e, Vector_3d& new_point) const
+  {
+    if(m_state.feature_edge[std::size_t(e)] || m_mesh.is_border(e))
+      return 0;
+    const Halfedge h = m_mesh.halfedge(e), o = m_mesh.opposite(h);
+    const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
+    if(is_frozen(a) || is_frozen(b))
+      return 0;
+    const Vertex c = m_mesh.target(m_mesh.next(h)), d = m_mesh.target(m_mesh.next(o));
+    const Vector_3d pa = position(a), pb = position(b), pc = position(c), pd = position(d);
+    if(!((pa - pb).norm() > 4.0 / 3.0 * edge_length_target(a, b)))
+      return 0;
+    new_point = project((pa + pb) / 2, a);
+    const Vector_3d& p = new_point;
+    if(!acceptable(pa, p, pc, a) || !acceptable(p, pb, pc, b) || !acceptable(pb, p, pd, b) ||
+       !acceptable(p, pa, pd, a))
+      return 0;
+    const double old_q = (std::min)(split_quality(pa, pb, pc), split_quality(pb, pa, pd));
+    const double new_q = (std::min)({split_quality(pa, p, pc), split_quality(p, pb, pc),
+                                     split_quality(pb, p, pd), split_quality(p, pa, pd)});
+    return new_q - old_q;
+  }
+
+  std::size_t split_edges()
+  {
+    std::size_t done = 0;
+    Vector_3d p;
+    run_queue([&](Edge e) { return split_gain(e, p); },
+              [&](Edge e) {
+                const Halfedge h = m_mesh.halfedge(e);
+                const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
+                // The new halfedge points from a to the new vertex; then cut both faces.
+                const Halfedge hn = CGAL::Euler::split_edge(h, m_mesh);
+                const Vertex v = m_mesh.target(hn);
+                m_mesh.point(v) = Work_kernel::Point_3(p.x(), p.y(), p.z());
+                CGAL::Euler::split_face(hn, m_mesh.next(m_mesh.next(hn)), m_mesh);
+                const Halfedge on = m_mesh.opposite(hn);
+                CGAL::Euler::split_face(m_mesh.prev(on), m_mesh.next(on), m_mesh);
+                fit_arrays();
+                bind_new_vertex(v, a);
+                for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+                {
+                  m_state.feature_edge[std::size_t(m_mesh.edge(g))] = 0;
+                  if(!m_mesh.is_border(g))
+                    m_state.face_hint[std::size_t(m_mesh.face(g))] = m_state.vertex_hint[std::size_t(v)];
+                }
+                ++done;
+                std::vector<Vertex> touched{{a, b, v}};
+                for(Vertex w : vertices_around_target(m_mesh.halfedge(v), m_mesh))
+                  touched.push_back(w);
+                return touched;
+              });
+    return done;
+  }
+
+  // --- collapses of short edges in flat regions: the smallest angle must grow ---
+
+  double collapse_gain(Edge e, Vector_3d& new_point) const
+  {
+    const Halfedge h = m_mesh.halfedge(e), o = m_mesh.opposite(h);
+    const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
+    if(!is_free(a) || !is_free(b) || m_mesh.is_border(e))
+      return 0;
+    const Vertex c = m_mesh.target(m_mesh.next(h)), d = m_mesh.target(m_mesh.next(o));
+    const Vector_3d pa = position(a), pb = position(b);
+    if(!((pa - pb).norm() < 4.0 / 5.0 * edge_length_target(a, b)))
+      return 0;
+    if(m_mesh.degree(c) < 4 || m_mesh.degree(d) < 4)
+      return 0;
+    const int merged = int(m_mesh.degree(a) + m_mesh.degree(b)) - 4;
+    const int change = std::abs(merged - 6) - std::abs(int(m_mesh.degree(a)) - 6) -
+                       std::abs(int(m_mesh.degree(b)) - 6) + deviation_change(c, -1) +
+                       deviation_change(d, -1);
+    if(change >= 0 || merged < 4)
+      return 0;
+    if(!is_flat_around(a) || !is_flat_around(b))
+      return 0;
+    if(!CGAL::Euler::does_satisfy_link_condition(e, m_mesh))
+      return 0;
+    // The triangles that stay, around a and b, before and after; the merged vertex goes to a, b
+    // or the midpoint brought onto the reference, whichever gives the largest smallest angle.
+    double old_min = pi;
+    for(Vertex u : {a, b})
+      for(Halfedge g : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+      {
+        const Vertex p = m_mesh.source(g), q = m_mesh.target(m_mesh.next(g));
+        old_min = (std::min)(old_min, smallest_angle(position(u), position(q), position(p)));
+      }
+    double best = -1;
+    for(const Vector_3d& x : {pa, pb, project((pa + pb) / 2, a)})
+    {
+      double new_min = pi;
+      bool ok = true;
+      for(Vertex u : {a, b})
+        for(Halfedge g : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+        {
+          const Vertex p = m_mesh.source(g), q = m_mesh.target(m_mesh.next(g));
+          if(p == a || p == b || q == a || q == b)
+            continue; // one of the two triangles that disappear
+          if(!acceptable(x, position(q), position(p), u))
+          {
+            ok = false;
+            break;
+          }
+          new_min = (std::min)(new_min, smallest_angle(x, position(q), position(p)));
+        }
+      if(ok && new_min - old_min > best)
+      {
+        best = new_min - old_min;
+        new_point = x;
+      }
+    }
+    return best;
+  }
+
+  std::size_t collapse_edges()
+  {
+    std::size_t done = 0;
+    Vector_3d p;
+    run_queue([&](Edge e) { return collapse_gain(e, p); },
+              [&](Edge e) {
+                const Vertex v = CGAL::Euler::collapse_edge(e, m_mesh);
+                m_mesh.point(v) = Work_kernel::Point_3(p.x(), p.y(), p.z());
+                bind_new_vertex(v, v);
+                std::vector<Vertex> touched{v};
+                for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+                {
+                  touched.push_back(m_mesh.source(g));
+                  m_state.face_hint[std::size_t(m_mesh.face(g))] = m_state.vertex_hint[std::size_t(v)];
+                }
+                ++done;
+                return touched;
+              });
+    return done;
+  }
+
+  // --- vertex splits: the global valence deviation must fall ---
+
+  // The best split of v: its ring (in the order of its incident triangles) is cut at wings i and j;
+  // one new vertex takes the ring from i to j, the other from j to i, and both see the wings.
+  struct Vertex_split
+  {
+    int change = 0;
+    std::size_t i = 0, j = 0;
+    Vector_3d first, second;
+  };
+
+  bool best_vertex_split(Vertex v, Vertex_split& best) const
+  {
+    if(!is_free(v) || m_mesh.degree(v) < 7)
+      return false;
+    std::vector<Vertex> ring;
+    for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      ring.push_back(m_mesh.source(g));
+    std::reverse(ring.begin(), ring.end()); // counterclockwise: faces (v, ring[k], ring[k+1])
+    const std::size_t n = ring.size();
+    for(Vertex r : ring)
+      if(is_frozen(r))
+        return false;
+    const Vector_3d x = position(v);
+    bool found = false;
+    double best_angle = 0;
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t span = 3; span + 3 <= n; ++span)
+      {
+        const std::size_t j = (i + span) % n;
+        const int change = std::abs(int(span) + 2 - 6) + std::abs(int(n - span) + 2 - 6) -
+                           std::abs(int(n) - 6) + deviation_change(ring[i], +1) +
+                           deviation_change(ring[j], +1);
+        if(change >= 0 || (found && change > best.change))
+          continue;
+        // Each new vertex halfway to the centroid of its side of the ring.
+        std::array<Vector_3d, 2> side{{Vector_3d::Zero(), Vector_3d::Zero()}};
+        for(std::size_t k = 0; k <= span; ++k)
+          side[0] += position(ring[(i + k) % n]);
+        for(std::size_t k = 0; k <= n - span; ++k)
+          side[1] += position(ring[(j + k) % n]);
+        const Vector_3d p = project(x + 0.5 * (side[0] / double(span + 1) - x), v);
+        const Vector_3d q = project(x + 0.5 * (side[1] / double(n - span + 1) - x), v);
+        double smallest = pi;
+        bool ok = true;
+        auto check = [&](const Vector_3d& u, const Vector_3d& w, const Vector_3d& z) {
+          ok = ok && acceptable(u, w, z, v);
+          if(ok)
+            smallest = (std::min)(smallest, smallest_angle(u, w, z));
+        };
+        for(std::size_t k = 0; k < span; ++k)
+          check(p, position(ring[(i + k) % n]), position(ring[(i + k + 1) % n]));
+        for(std::size_t k = 0; k < n - span; ++k)
+          check(q, position(ring[(j + k) % n]), position(ring[(j + k + 1) % n]));
+        check(p, position(ring[j]), q);
+        check(q, position(ring[i]), p);
+        if(!ok)
+          continue;
+        if(!found || change < best.change || smallest > best_angle)
+        {
+          found = true;
+          best_angle = smallest;
+          best.change = change;
+          best.i = i;
+          best.j = j;
+          best.first = p;
+          best.second = q;
+        }
+      }
+    // A split must not make the worst triangle around v worse than it was.
+    if(found)
+    {
+      double old_min = pi;
+      for(std::size_t k = 0; k < n; ++k)
+        old_min = (std::min)(old_min, smallest_angle(x, position(ring[k]), position(ring[(k + 1) % n])));
+      found = best_angle >= (std::min)(old_min, 30 * pi / 180);
+    }
+    return found;
+  }
+
+  std::size_t split_vertices()
+  {
+    std::size_t done = 0;
+    std::vector<Vertex> todo(m_mesh.vertices().begin(), m_mesh.vertices().end());
+    for(Vertex v : todo)
+    {
+      if(m_mesh.is_removed(v))
+        continue;
+      Vertex_split s;
+      if(!best_vertex_split(v, s))
+        continue;
+      std::vector<Vertex> ring;
+      for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+        ring.push_back(m_mesh.source(g));
+      std::reverse(ring.begin(), ring.end());
+      const std::size_t n = ring.size();
+      const Vertex_kind kind = m_state.kind[std::size_t(v)];
+      const Face hint = m_state.vertex_hint[std::size_t(v)];
+      const Vertex closest = m_state.closest[std::size_t(v)];
+      // Remove the fan around v and triangulate the hole with the two new vertices.
+      std::vector<Face> fan;
+      for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+        fan.push_back(m_mesh.face(g));
+      for(Face f : fan)
+        CGAL::Euler::remove_face(m_mesh.halfedge(f), m_mesh);
+      const Vertex p = m_mesh.add_vertex(Work_kernel::Point_3(s.first.x(), s.first.y(), s.first.z()));
+      const Vertex q = m_mesh.add_vertex(Work_kernel::Point_3(s.second.x(), s.second.y(), s.second.z()));
+      fit_arrays();
+      for(Vertex w : {p, q})
+      {
+        m_state.kind[std::size_t(w)] = kind;
+        m_state.closest[std::size_t(w)] = closest;
+        m_state.vertex_hint[std::size_t(w)] = hint;
+        m_state.frozen[std::size_t(w)] = 0;
+      }
+      const std::size_t span = (s.j + n - s.i) % n;
+      auto add = [&](Vertex u, Vertex w, Vertex z) {
+        const Face f = m_mesh.add_face(u, w, z);
+        CGAL_assertion(f != Work_mesh::null_face());
+        fit_arrays();
+        m_state.face_hint[std::size_t(f)] = hint;
+      };
+      for(std::size_t k = 0; k < span; ++k)
+        add(p, ring[(s.i + k) % n], ring[(s.i + k + 1) % n]);
+      for(std::size_t k = 0; k < n - span; ++k)
+        add(q, ring[(s.j + k) % n], ring[(s.j + k + 1) % n]);
+      add(p, ring[s.j], q);
+      add(q, ring[s.i], p);
+      for(Halfedge g : halfedges_around_target(m_mesh.halfedge(p), m_mesh))
+        m_state.feature_edge[std::size_t(m_mesh.edge(g))] = 0;
+      for(Halfedge g : halfedges_around_target(m_mesh.halfedge(q), m_mesh))
+        m_state.feature_edge[std::size_t(m_mesh.edge(g))] = 0;
+      bind_new_vertex(p, p);
+      bind_new_vertex(q, q);
+      ++done;
+    }
+    return done;
+  }
+
+  // --- section 3.2: angle-based, else Laplacian, tangential smoothing without fold-over ---
+
+  std::size_t relax()
+  {
+    std::size_t moved = 0;
+    for(Vertex v : m_mesh.vertices())
+    {
+      if(!is_free(v) || is_frozen(v))
+        continue;
+      const Vector_3d x = position(v);
+      Link link;
+      std::vector<Vector_3d> ring;
+      std::vector<Vector_3d> normals;
+      for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      {
+        const Vector_3d p = position(m_mesh.source(h)), q = position(m_mesh.target(m_mesh.next(h)));
+        ring.push_back(p);
+        link.emplace_back(q, p);
+        normals.push_back(area_vector(x, q, p));
+      }
+      const Vector_3d normal = m_reference.frame(m_state.closest[std::size_t(v)]).normal;
+      auto try_move = [&](const Vector_3d& target) {
+        const Vector_3d y = project(x + tangential(target - x, normal), v);
+        for(std::size_t k = 0; k < link.size(); ++k)
+          if(!is_acceptable_triangle(y, link[k].first, link[k].second, normals[k]))
+            return false;
+        m_mesh.point(v) = Work_kernel::Point_3(y.x(), y.y(), y.z());
+        return true;
+      };
+      if(try_move(angle_based_target(x, link)) || try_move(laplacian_target(x, ring)))
+        ++moved;
+    }
+    return moved;
+  }
+
+  // Grows the per-element arrays to the mesh's capacity (removed elements included).
+  void fit_arrays()
+  {
+    const std::size_t nv = m_mesh.num_vertices(), ne = m_mesh.num_edges(), nf = m_mesh.num_faces();
+    if(m_state.kind.size() < nv)
+    {
+      m_state.kind.resize(nv, Vertex_kind::free_vertex);
+      m_state.closest.resize(nv);
+      m_state.vertex_hint.resize(nv);
+      m_state.frozen.resize(nv, 0);
+    }
+    if(m_state.feature_edge.size() < ne)
+      m_state.feature_edge.resize(ne, 0);
+    if(m_state.face_hint.size() < nf)
+      m_state.face_hint.resize(nf);
+  }
+
+private:
+  Vector_3d position(Vertex v) const { return to_vector(m_mesh.point(v)); }
+
+  bool is_free(Vertex v) const
+  {
+    return m_state.kind[std::size_t(v)] == Vertex_kind::free_vertex && !is_frozen(v);
+  }
+  bool is_frozen(Vertex v) const { return m_state.frozen[std::size_t(v)] != 0; }
+
+  bool flippable(Edge e) const
+  {
+    if(m_state.feature_edge[std::size_t(e)] || m_mesh.is_border(e))
+      return false;
+    const Halfedge h = m_mesh.halfedge(e);
+    for(Vertex u : {m_mesh.source(h), m_mesh.target(h), m_mesh.target(m_mesh.next(h)),
+                    m_mesh.target(m_mesh.next(m_mesh.opposite(h)))})
+      if(is_frozen(u))
+        return false;
+    return true;
+  }
+
+  // How |valence - 6| (4 on a border) changes when v's valence changes by `delta`.
+  int deviation_change(Vertex v, int delta) const
+  {
+    const int target = m_mesh.is_border(v) ? 4 : 6;
+    const int d = int(m_mesh.degree(v));
+    return std::abs(d + delta - target) - std::abs(d - target);
+  }
+
+  // A triangle an operation may create: not degenerate, not turned over against the reference
+  // (its normal where the triangle's centroid is closest to it, searched from `near`'s triangle).
+  bool acceptable(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c, Vertex near) const
+  {
+    Face hint = m_state.vertex_hint[std::size_t(near)];
+    const Vector_3d normal = m_reference.frame_at_closest_point((a + b + c) / 3, hint).normal;
+    return is_acceptable_triangle(a, b, c, normal);
+  }
+
+  Vector_3d project(const Vector_3d& x, Vertex near) const
+  {
+    Face hint = m_state.vertex_hint[std::size_t(near)];
+    return m_reference.frame_at_closest_point(x, hint).origin;
+  }
+
+  double distance_to_reference(const Vector_3d& x, Vertex near) const
+  {
+    return (x - project(x, near)).norm();
+  }
+
+  double edge_length_target(Vertex a, Vertex b) const
+  {
+    return (std::min)(m_sizing.length(m_reference.frame(m_state.closest[std::size_t(a)])),
+                      m_sizing.length(m_reference.frame(m_state.closest[std::size_t(b)])));
+  }
+
+  // Every dihedral angle (between face normals) at the edges around v is below flat_dihedral.
+  bool is_flat_around(Vertex v) const
+  {
+    for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+    {
+      if(m_mesh.is_border(h) || m_mesh.is_border(m_mesh.opposite(h)))
+        return false;
+      const auto t = face_vertices(m_mesh, m_mesh.face(h));
+      const auto u = face_vertices(m_mesh, m_mesh.face(m_mesh.opposite(h)));
+      const Vector_3d n1 = area_vector(position(t[0]), position(t[1]), position(t[2]));
+      const Vector_3d n2 = area_vector(position(u[0]), position(u[1]), position(u[2]));
+      if(!(angle_between(n1, n2) < flat_dihedral))
+        return false;
+    }
+    return true;
+  }
+
+  // A new or moved vertex is tracked from its neighbour's reference elements, then by the same
+  // local searches as every vertex.
+  void bind_new_vertex(Vertex v, Vertex from)
+  {
+    m_state.kind[std::size_t(v)] = Vertex_kind::free_vertex;
+    m_state.frozen[std::size_t(v)] = 0;
+    m_state.closest[std::size_t(v)] = m_state.closest[std::size_t(from)];
+    m_state.vertex_hint[std::size_t(v)] = m_state.vertex_hint[std::size_t(from)];
+    const Vector_3d x = position(v);
+    m_state.closest[std::size_t(v)] = m_reference.closest_vertex(x, m_state.closest[std::size_t(v)]);
+    m_reference.frame_at_closest_point(x, m_state.vertex_hint[std::size_t(v)]);
+  }
+
+  // A priority queue of edges by gain, best first: an entry is stale once its edge has been
+  // pushed again, and the gain of the top entry is computed anew (an operation may have changed
+  // the valence of a vertex opposite the edge) before `apply`, which may use what `gain` found.
+  // `apply` returns the vertices whose edges must be looked at again.
+  template <typename Gain, typename Apply>
+  void run_queue(Gain gain, Apply apply)
+  {
+    struct Entry
+    {
+      double gain;
+      Edge e;
+      std::size_t stamp;
+      bool operator<(const Entry& other) const
+      {
+        return gain < other.gain || (gain == other.gain && other.e < e);
+      }
+    };
+    std::vector<std::size_t> stamp(m_mesh.num_edges(), 0);
+    std::priority_queue<Entry> queue;
+    auto push = [&](Edge e) {
+      if(stamp.size() <= std::size_t(e))
+        stamp.resize(m_mesh.num_edges(), 0);
+      ++stamp[std::size_t(e)];
+      const double g = gain(e);
+      if(g > 0)
+        queue.push(Entry{g, e, stamp[std::size_t(e)]});
+    };
+    for(Edge e : m_mesh.edges())
+      push(e);
+    while(!queue.empty())
+    {
+      const Entry top = queue.top();
+      queue.pop();
+      if(m_mesh.is_removed(top.e) || stamp[std::size_t(top.e)] != top.stamp)
+        continue;
+      const double g = gain(top.e);
+      if(!(g > 0))
+        continue;
+      if(g < top.gain)
+      {
+        queue.push(Entry{g, top.e, top.stamp});
+        continue;
+      }
+      const std::vector<Vertex> touched = apply(top.e);
+      std::vector<Edge> again;
+      for(Vertex u : touched)
+        if(!m_mesh.is_removed(u))
+          for(Halfedge h : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+            again.push_back(m_mesh.edge(h));
+      std::sort(again.begin(), again.end());
+      again.erase(std::unique(again.begin(), again.end()), again.end());
+      for(Edge e : again)
+        push(e);
+    }
+  }
+
+  Work_mesh& m_mesh;
+  const Reference_surface<Work_mesh>& m_reference;
+  Tracking_state& m_state;
+  Sizing m_sizing;
+};
+
+} // namespace Graphcut_remeshing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_CONNECTIVITY_H
