@@ -8,6 +8,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -134,6 +135,71 @@ inline Mesh make_sphere(unsigned levels, double radius = 1.0, const Point& cente
     points.emplace_back(center.x() + s * q[0], center.y() + s * q[1], center.z() + s * q[2]);
   }
   return mesh_from_soup(points, f);
+}
+
+// An icosphere whose vertices are pushed at random along and across the surface.
+inline Mesh noisy_sphere(unsigned levels, double tangential, double normal, unsigned seed)
+{
+  Mesh m = make_sphere(levels);
+  CGAL::Random rng(seed);
+  for(auto v : vertices(m))
+  {
+    const Vector n = m.point(v) - CGAL::ORIGIN;
+    const Vector t = CGAL::cross_product(n, Vector(rng.get_double(-1, 1), rng.get_double(-1, 1), rng.get_double(-1, 1)));
+    m.point(v) = m.point(v) + tangential * t + normal * rng.get_double(-1, 1) * n;
+  }
+  return m;
+}
+
+// A closed box [0, a] x [0, b] x [0, c] whose faces are n x n grids, each slightly jittered
+// inside its face plane so that the triangles are uneven.
+inline Mesh jittered_box(double a, double b, double c, std::size_t n, unsigned seed)
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  CGAL::Random rng(seed);
+  std::map<std::array<long, 3>, std::size_t> index;
+  auto vertex = [&](long i, long j, long k) {
+    const std::array<long, 3> key{{i, j, k}};
+    auto it = index.find(key);
+    if(it != index.end())
+      return it->second;
+    // Jitter along the coordinates that are not on the box's boundary in that direction.
+    double p[3] = {double(i), double(j), double(k)};
+    const long ijk[3] = {i, j, k};
+    for(int d = 0; d < 3; ++d)
+      if(ijk[d] != 0 && ijk[d] != long(n))
+        p[d] += rng.get_double(-0.3, 0.3);
+    points.emplace_back(a * p[0] / double(n), b * p[1] / double(n), c * p[2] / double(n));
+    index.emplace(key, points.size() - 1);
+    return points.size() - 1;
+  };
+  // Each face: a grid over two free coordinates, the third fixed at 0 or n, oriented outwards.
+  for(int axis = 0; axis < 3; ++axis)
+    for(long side : {0l, long(n)})
+      for(long u = 0; u < long(n); ++u)
+        for(long w = 0; w < long(n); ++w)
+        {
+          auto at = [&](long s, long t) {
+            long ijk[3];
+            ijk[axis] = side;
+            ijk[(axis + 1) % 3] = s;
+            ijk[(axis + 2) % 3] = t;
+            return vertex(ijk[0], ijk[1], ijk[2]);
+          };
+          const std::size_t p00 = at(u, w), p10 = at(u + 1, w), p11 = at(u + 1, w + 1), p01 = at(u, w + 1);
+          if(side == 0)
+          {
+            triangles.push_back({{p00, p11, p10}});
+            triangles.push_back({{p00, p01, p11}});
+          }
+          else
+          {
+            triangles.push_back({{p00, p10, p11}});
+            triangles.push_back({{p00, p11, p01}});
+          }
+        }
+  return mesh_from_soup(points, triangles);
 }
 
 // One of CGAL's sample meshes, extracted into the build tree by CMake.

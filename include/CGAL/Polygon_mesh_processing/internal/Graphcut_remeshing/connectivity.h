@@ -340,8 +340,12 @@ public:
     std::reverse(ring.begin(), ring.end()); // counterclockwise: faces (v, ring[k], ring[k+1])
     const std::size_t n = ring.size();
     for(Vertex r : ring)
-      if(is_frozen(r))
+    {
+      // The fan of v is removed and rebuilt: each ring vertex must keep a triangle of its own.
+      const std::size_t faces_of_r = m_mesh.degree(r) - (m_mesh.is_border(r) ? 1 : 0);
+      if(is_frozen(r) || faces_of_r < 3)
         return false;
+    }
     const Vector_3d x = position(v);
     bool found = false;
     double best_angle = 0;
@@ -354,41 +358,48 @@ public:
                            deviation_change(ring[j], +1);
         if(change >= 0 || (found && change > best.change))
           continue;
-        // Each new vertex halfway to the centroid of its side of the ring.
+        // Each new vertex on the way to the centroid of its side of the ring, as far along as
+        // gives the best triangles.
         std::array<Vector_3d, 2> side{{Vector_3d::Zero(), Vector_3d::Zero()}};
         for(std::size_t k = 0; k <= span; ++k)
           side[0] += position(ring[(i + k) % n]);
         for(std::size_t k = 0; k <= n - span; ++k)
           side[1] += position(ring[(j + k) % n]);
-        const Vector_3d p = project(x + 0.5 * (side[0] / double(span + 1) - x), v);
-        const Vector_3d q = project(x + 0.5 * (side[1] / double(n - span + 1) - x), v);
-        double smallest = pi;
-        bool ok = true;
-        auto check = [&](const Vector_3d& u, const Vector_3d& w, const Vector_3d& z) {
-          ok = ok && acceptable(u, w, z, v);
-          if(ok)
-            smallest = (std::min)(smallest, smallest_angle(u, w, z));
-        };
-        for(std::size_t k = 0; k < span; ++k)
-          check(p, position(ring[(i + k) % n]), position(ring[(i + k + 1) % n]));
-        for(std::size_t k = 0; k < n - span; ++k)
-          check(q, position(ring[(j + k) % n]), position(ring[(j + k + 1) % n]));
-        check(p, position(ring[j]), q);
-        check(q, position(ring[i]), p);
-        if(!ok)
-          continue;
-        if(!found || change < best.change || smallest > best_angle)
+        side[0] /= double(span + 1);
+        side[1] /= double(n - span + 1);
+        for(double along : {0.4, 0.55, 0.7})
         {
-          found = true;
-          best_angle = smallest;
-          best.change = change;
-          best.i = i;
-          best.j = j;
-          best.first = p;
-          best.second = q;
+          const Vector_3d p = project(x + along * (side[0] - x), v);
+          const Vector_3d q = project(x + along * (side[1] - x), v);
+          double smallest = pi;
+          bool ok = true;
+          auto check = [&](const Vector_3d& u, const Vector_3d& w, const Vector_3d& z) {
+            ok = ok && acceptable(u, w, z, v);
+            if(ok)
+              smallest = (std::min)(smallest, smallest_angle(u, w, z));
+          };
+          for(std::size_t k = 0; k < span; ++k)
+            check(p, position(ring[(i + k) % n]), position(ring[(i + k + 1) % n]));
+          for(std::size_t k = 0; k < n - span; ++k)
+            check(q, position(ring[(j + k) % n]), position(ring[(j + k + 1) % n]));
+          check(p, position(ring[j]), q);
+          check(q, position(ring[i]), p);
+          if(!ok)
+            continue;
+          if(!found || change < best.change || (change == best.change && smallest > best_angle))
+          {
+            found = true;
+            best_angle = smallest;
+            best.change = change;
+            best.i = i;
+            best.j = j;
+            best.first = p;
+            best.second = q;
+          }
         }
       }
-    // A split must not make the worst triangle around v worse than it was.
+    // A split must not make the worst triangle around v worse than it was, unless that one stays
+    // above 30 degrees.
     if(found)
     {
       double old_min = pi;

@@ -1,0 +1,536 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Section 3, the connectivity optimisation: each local operator on meshes built to need it, the
+// guarantees of a pass (valid, manifold, same topology, no degenerate or folded triangle,
+// features untouched) on several meshes, and the whole method with connectivity changes.
+
+#include "test_meshes.h"
+
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/graphcut_isotropic_remeshing.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/connectivity.h>
+#include <CGAL/Polygon_mesh_processing/mesh_quality_report.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace graphcut_remeshing_test;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace GP = PMP::graphcut_parameters;
+namespace GR = PMP::internal::Graphcut_remeshing;
+using Work = GR::Work_mesh;
+
+namespace {
+
+Work to_work(const Mesh& m)
+{
+  Work w;
+  CGAL::copy_face_graph(m, w);
+  return w;
+}
+
+// Random flips that keep the triangles sound, to make the valences irregular.
+void scramble(Work& m, const std::vector<char>& feature, unsigned seed, std::size_t flips)
+{
+  CGAL::Random rng(seed);
+  std::vector<Work::Edge_index> edges(m.edges().begin(), m.edges().end());
+  for(std::size_t k = 0; k < flips; ++k)
+  {
+    const Work::Edge_index e = edges[rng.get_int(0, int(edges.size()))];
+    if(feature[std::size_t(e)] || m.is_border(e))
+      continue;
+    const auto h = m.halfedge(e), o = m.opposite(h);
+    const auto a = m.source(h), b = m.target(h), c = m.target(m.next(h)), d = m.target(m.next(o));
+    if(m.halfedge(c, d) != Work::null_halfedge() || m.degree(a) < 5 || m.degree(b) < 5)
+      continue;
+    auto p = [&m](Work::Vertex_index v) { return GR::to_vector(m.point(v)); };
+    const GR::Vector_3d n = GR::area_vector(p(a), p(b), p(c)) + GR::area_vector(p(b), p(a), p(d));
+    if(!GR::is_acceptable_triangle(p(a), p(d), p(c), n) || !GR::is_acceptable_triangle(p(d), p(b), p(c), n) ||
+       GR::smallest_angle(p(a), p(d), p(c)) < 0.3 || GR::smallest_angle(p(d), p(b), p(c)) < 0.3)
+      continue;
+    CGAL::Euler::flip_edge(h, m);
+  }
+}
+
+// A working mesh with its unchanged reference copy and the tracking state of a fresh remesher:
+// what the connectivity operators work on.
+class Pass_setup
+{
+public:
+  explicit Pass_setup(const Work& m, double length_factor = 1.0, bool sharp_features = true)
+    : mesh(m), reference_mesh(m), reference(reference_mesh)
+  {
+    state.feature_edge = sharp_features ? GR::detect_sharp_edges(mesh, 20, 35)
+                                        : std::vector<char>(mesh.num_edges(), 0);
+    for(auto e : mesh.edges())
+      if(mesh.is_border(e))
+        state.feature_edge[std::size_t(e)] = 1;
+    state.kind = GR::classify_vertices(mesh, state.feature_edge, std::vector<char>(mesh.num_vertices(), 0));
+    state.closest.resize(mesh.num_vertices());
+    state.vertex_hint.resize(mesh.num_vertices());
+    state.frozen.assign(mesh.num_vertices(), 0);
+    for(auto v : mesh.vertices())
+    {
+      state.closest[std::size_t(v)] = v;
+      state.vertex_hint[std::size_t(v)] = reference.incident_face(v);
+    }
+    state.face_hint.resize(mesh.num_faces());
+    for(auto f : mesh.faces())
+      state.face_hint[std::size_t(f)] = f;
+    double total = 0;
+    for(auto e : mesh.edges())
+      total += (point(mesh.source(mesh.halfedge(e))) - point(mesh.target(mesh.halfedge(e)))).norm();
+    sizing.mean_length = length_factor * total / double(mesh.number_of_edges());
+    sizing.tolerance = 3e-3;
+    input_feature_edges = feature_edges();
+  }
+
+  GR::Connectivity_optimizer optimizer() { return GR::Connectivity_optimizer(mesh, reference, state, sizing); }
+
+  GR::Vector_3d point(Work::Vertex_index v) const { return GR::to_vector(mesh.point(v)); }
+
+  // The feature edges as pairs of vertex indices.
+  std::set<std::pair<std::size_t, std::size_t> > feature_edges() const
+  {
+    std::set<std::pair<std::size_t, std::size_t> > s;
+    for(auto e : mesh.edges())
+      if(state.feature_edge[std::size_t(e)])
+      {
+        const std::size_t a = std::size_t(mesh.source(mesh.halfedge(e))), b = std::size_t(mesh.target(mesh.halfedge(e)));
+        s.emplace((std::min)(a, b), (std::max)(a, b));
+      }
+    return s;
+  }
+
+  // The reference triangle nearest to x, by brute force: an oracle for the fold-over check.
+  GR::Vector_3d reference_normal(const GR::Vector_3d& x) const
+  {
+    double best = std::numeric_limits<double>::infinity();
+    GR::Vector_3d normal = GR::Vector_3d::Zero();
+    for(auto f : reference_mesh.faces())
+    {
+      const auto t = GR::face_vertices(reference_mesh, f);
+      const GR::Vector_3d a = GR::to_vector(reference_mesh.point(t[0])), b = GR::to_vector(reference_mesh.point(t[1])),
+                          c = GR::to_vector(reference_mesh.point(t[2]));
+      std::array<double, 3> w;
+      const double d = (x - GR::closest_point_on_triangle(x, a, b, c, w)).squaredNorm();
+      if(d < best)
+      {
+        best = d;
+        normal = GR::area_vector(a, b, c).normalized();
+      }
+    }
+    return normal;
+  }
+
+  Work mesh;
+  const Work reference_mesh;
+  GR::Reference_surface<Work> reference;
+  GR::Tracking_state state;
+  GR::Sizing sizing;
+  std::set<std::pair<std::size_t, std::size_t> > input_feature_edges;
+};
+
+int valence_deviation(const Work& m)
+{
+  int d = 0;
+  for(auto v : m.vertices())
+    d += std::abs(int(m.degree(v)) - (m.is_border(v) ? 4 : 6));
+  return d;
+}
+
+int euler_characteristic(const Work& m)
+{
+  return int(m.number_of_vertices()) - int(m.number_of_edges()) + int(m.number_of_faces());
+}
+
+std::size_t components(const Work& m)
+{
+  std::vector<std::size_t> ids(m.num_faces(), 0);
+  return PMP::connected_components(m, CGAL::make_property_map(ids));
+}
+
+std::size_t border_halfedges(const Work& m)
+{
+  std::size_t n = 0;
+  for(auto h : m.halfedges())
+    n += m.is_border(h) ? 1 : 0;
+  return n;
+}
+
+// What every pass must keep: a valid manifold mesh of the same topology, no degenerate triangle,
+// none turned over against the reference, feature edges and the vertices on them untouched.
+void expect_pass_guarantees(const Pass_setup& s, const Work& before, const std::string& name)
+{
+  const Work& m = s.mesh;
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m)) << name;
+  EXPECT_TRUE(CGAL::is_triangle_mesh(m)) << name;
+  EXPECT_EQ(euler_characteristic(m), euler_characteristic(before)) << name;
+  EXPECT_EQ(components(m), components(before)) << name;
+  EXPECT_EQ(border_halfedges(m), border_halfedges(before)) << name;
+  // Manifold: no two edges join the same two vertices.
+  std::set<std::pair<std::size_t, std::size_t> > seen;
+  for(auto e : m.edges())
+  {
+    const std::size_t a = std::size_t(m.source(m.halfedge(e))), b = std::size_t(m.target(m.halfedge(e)));
+    EXPECT_TRUE(seen.emplace((std::min)(a, b), (std::max)(a, b)).second) << name << ": duplicated edge";
+  }
+  std::size_t degenerate = 0, folded = 0;
+  for(auto f : m.faces())
+  {
+    const auto t = GR::face_vertices(m, f);
+    const GR::Vector_3d a = s.point(t[0]), b = s.point(t[1]), c = s.point(t[2]);
+    const GR::Vector_3d n = GR::area_vector(a, b, c);
+    if(!(GR::smallest_angle(a, b, c) > 1e-3))
+      ++degenerate;
+    else if(!(n.dot(s.reference_normal((a + b + c) / 3)) > 0))
+      ++folded;
+  }
+  EXPECT_EQ(degenerate, 0u) << name;
+  EXPECT_EQ(folded, 0u) << name;
+  for(const auto& e : s.input_feature_edges)
+  {
+    const Work::Vertex_index a(static_cast<Work::size_type>(e.first)), b(static_cast<Work::size_type>(e.second));
+    ASSERT_FALSE(m.is_removed(a) || m.is_removed(b)) << name << ": a feature vertex was removed";
+    EXPECT_NE(m.halfedge(a, b), Work::null_halfedge()) << name << ": a feature edge was flipped or collapsed";
+    EXPECT_EQ(m.point(a), before.point(a)) << name << ": a feature vertex moved in a pass";
+    EXPECT_EQ(m.point(b), before.point(b)) << name << ": a feature vertex moved in a pass";
+  }
+}
+
+struct Named_mesh
+{
+  std::string name;
+  Work mesh;
+};
+
+// Closed, open, curved, flat, with and without sharp features, genus 0 and 1.
+std::vector<Named_mesh> scrambled_meshes()
+{
+  std::vector<Named_mesh> meshes;
+  meshes.push_back({"noisy sphere", to_work(noisy_sphere(3, 0.02, 0.0, 11))});
+  meshes.push_back({"torus", to_work(make_torus(36, 14, 1.0, 0.35))});
+  meshes.push_back({"jittered box", to_work(jittered_box(1, 2, 0.5, 6, 12))});
+  meshes.push_back({"flat grid", to_work(make_grid(14, 12, [](std::size_t i, std::size_t j) {
+                      return Point(double(i) + 0.3 * std::sin(3.0 * double(j)), double(j) + 0.2 * std::cos(2.0 * double(i)), 0);
+                    }))});
+  unsigned seed = 1;
+  for(Named_mesh& m : meshes)
+  {
+    const std::vector<char> sharp = GR::detect_sharp_edges(m.mesh, 20, 35);
+    scramble(m.mesh, sharp, seed++, m.mesh.number_of_edges());
+  }
+  return meshes;
+}
+
+} // namespace
+
+TEST(Connectivity_pass, KeepsTheGuaranteesOnSeveralMeshes)
+{
+  for(const Named_mesh& input : scrambled_meshes())
+    for(double length_factor : {0.7, 1.0, 1.5})
+    {
+      Pass_setup s(input.mesh, length_factor);
+      const int deviation = valence_deviation(s.mesh);
+      const std::string name = input.name + " x" + std::to_string(length_factor);
+      GR::Connectivity_counts total;
+      for(int pass = 0; pass < 3; ++pass)
+      {
+        const Work before = s.mesh;
+        const GR::Connectivity_counts c = s.optimizer().run();
+        expect_pass_guarantees(s, before, name + " pass " + std::to_string(pass));
+        total.flips += c.flips;
+        total.splits += c.splits;
+        total.collapses += c.collapses;
+        total.vertex_splits += c.vertex_splits;
+        total.relaxed += c.relaxed;
+      }
+      EXPECT_GT(total.flips, 0u) << name;
+      EXPECT_GT(total.relaxed, 0u) << name;
+      EXPECT_LT(valence_deviation(s.mesh), deviation) << name;
+    }
+}
+
+// Each flip lowers the sum of |valence - 6| by at least one, and no flip makes a triangle with
+// an angle below the flip floor unless it raised the smallest angle.
+TEST(Connectivity_pass, FlipsLowerTheValenceDeviation)
+{
+  for(const Named_mesh& input : scrambled_meshes())
+  {
+    Pass_setup s(input.mesh);
+    const int before = valence_deviation(s.mesh);
+    const std::size_t flips = s.optimizer().flip_edges();
+    EXPECT_GT(flips, 10u) << input.name;
+    EXPECT_LE(valence_deviation(s.mesh), before - int(flips)) << input.name;
+  }
+}
+
+// Collapses happen only on short edges whose both ends are off features and in flat regions.
+TEST(Connectivity_pass, CollapsesStayAwayFromFeaturesAndCurvedParts)
+{
+  // The box: its faces are flat, its edges sharp; scrambled, so that collapses can make the
+  // valences more regular. Every edge is short for a target twice the mean.
+  Work box = to_work(jittered_box(1, 1, 1, 8, 3));
+  scramble(box, GR::detect_sharp_edges(box, 20, 35), 4, box.number_of_edges());
+  Pass_setup s(box, 2.0);
+  // The vertices of the sharp edges and the degrees they had.
+  std::vector<std::size_t> on_feature(s.mesh.num_vertices(), 0);
+  for(auto e : s.mesh.edges())
+    if(s.state.feature_edge[std::size_t(e)])
+      for(auto v : {s.mesh.source(s.mesh.halfedge(e)), s.mesh.target(s.mesh.halfedge(e))})
+        on_feature[std::size_t(v)] = s.mesh.degree(v);
+  const std::size_t n = s.mesh.number_of_vertices();
+  const Work before = s.mesh;
+  const std::size_t collapses = s.optimizer().collapse_edges();
+  EXPECT_GT(collapses, 0u);
+  expect_pass_guarantees(s, before, "box collapses");
+  EXPECT_EQ(s.mesh.number_of_vertices(), n - collapses);
+  // A collapse of an edge with an end on a sharp edge would raise that end's degree (it takes
+  // the other end's neighbours); collapses elsewhere can only lower it.
+  for(std::size_t i = 0; i < on_feature.size(); ++i)
+  {
+    if(on_feature[i])
+    {
+      const Work::Vertex_index v(static_cast<Work::size_type>(i));
+      ASSERT_FALSE(s.mesh.is_removed(v));
+      EXPECT_LE(s.mesh.degree(v), on_feature[i]) << "an edge next to a sharp edge was collapsed";
+    }
+  }
+
+  // A sphere is curved everywhere: no dihedral angle below 10 degrees at this resolution.
+  Pass_setup sphere(to_work(make_sphere(2)), 2.0);
+  EXPECT_EQ(sphere.optimizer().collapse_edges(), 0u);
+}
+
+// A vertex of valence 10 in the middle of a disc: its ring of 10 vertices of valence 5, then a
+// border ring of 10 vertices of valence 4. One vertex split makes two vertices of valence 7 and
+// brings two ring vertices to 6.
+TEST(Connectivity_pass, VertexSplitLowersTheValenceDeviation)
+{
+  for(double scale : {1e-3, 1.0, 1e3})
+  {
+    std::vector<Point> points{Point(0, 0, 0)};
+    std::vector<std::array<std::size_t, 3> > triangles;
+    const std::size_t n = 10;
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const double a = 2 * pi * double(k) / double(n), b = a + pi / double(n);
+      points.emplace_back(scale * std::cos(a), scale * std::sin(a), 0);
+      points.emplace_back(2 * scale * std::cos(b), 2 * scale * std::sin(b), 0);
+    }
+    auto inner = [n](std::size_t k) { return 1 + 2 * (k % n); };
+    auto outer = [n](std::size_t k) { return 2 + 2 * (k % n); };
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      triangles.push_back({{0, inner(k), inner(k + 1)}});
+      triangles.push_back({{inner(k), outer(k), inner(k + 1)}});
+      triangles.push_back({{inner(k + 1), outer(k), outer(k + 1)}});
+    }
+    Pass_setup s(to_work(mesh_from_soup(points, triangles)));
+    const Work before = s.mesh;
+    const int deviation = valence_deviation(s.mesh);
+    const std::string name = "disc at scale " + std::to_string(scale);
+    EXPECT_EQ(s.optimizer().split_vertices(), 1u) << name;
+    expect_pass_guarantees(s, before, name);
+    EXPECT_EQ(s.mesh.number_of_vertices(), 2 * n + 2) << name;
+    EXPECT_EQ(s.mesh.number_of_faces(), 3 * n + 2) << name;
+    EXPECT_EQ(valence_deviation(s.mesh), deviation - 4) << name;
+    std::size_t split_halves = 0;
+    for(auto v : s.mesh.vertices())
+      if(s.mesh.degree(v) == 7)
+      {
+        ++split_halves;
+        EXPECT_EQ(s.state.kind[std::size_t(v)], GR::Vertex_kind::free_vertex) << name;
+        EXPECT_NE(s.state.vertex_hint[std::size_t(v)], Work::null_face()) << name << ": not bound to the reference";
+      }
+    EXPECT_EQ(split_halves, 2u) << name;
+  }
+}
+
+// Long edges between obtuse triangles are split where the split quality improves: a row of flat
+// diamonds whose long diagonals are shared by two triangles with a 130 degree angle.
+TEST(Connectivity_pass, LongEdgesBetweenObtuseTrianglesAreSplit)
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  const std::size_t n = 4;
+  for(std::size_t k = 0; k <= n; ++k)
+    points.emplace_back(4.0 * double(k), 0, 0); // p_k = k
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    points.emplace_back(4.0 * double(k) + 2, 0.9, 0);  // t_k = n + 1 + 2k
+    points.emplace_back(4.0 * double(k) + 2, -0.9, 0); // b_k = n + 2 + 2k
+  }
+  auto t = [n](std::size_t k) { return n + 1 + 2 * k; };
+  auto b = [n](std::size_t k) { return n + 2 + 2 * k; };
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    triangles.push_back({{k, k + 1, t(k)}});
+    triangles.push_back({{k + 1, k, b(k)}});
+    if(k + 1 < n)
+    {
+      triangles.push_back({{t(k), k + 1, t(k + 1)}});
+      triangles.push_back({{b(k), b(k + 1), k + 1}});
+    }
+  }
+  Pass_setup s(to_work(mesh_from_soup(points, triangles)));
+  s.sizing.mean_length = 1.0;
+  auto mean_quality = [&s] {
+    double q = 0;
+    for(auto f : s.mesh.faces())
+    {
+      const auto t = GR::face_vertices(s.mesh, f);
+      q += GR::split_quality(s.point(t[0]), s.point(t[1]), s.point(t[2]));
+    }
+    return q / double(s.mesh.number_of_faces());
+  };
+  const Work before = s.mesh;
+  const double q0 = mean_quality();
+  const std::size_t splits = s.optimizer().split_edges();
+  EXPECT_GE(splits, n);
+  expect_pass_guarantees(s, before, "diamonds");
+  EXPECT_EQ(s.mesh.number_of_vertices(), before.number_of_vertices() + splits);
+  EXPECT_GT(mean_quality(), q0);
+  // No long diagonal (length 4, between two triangles) is left.
+  for(auto e : s.mesh.edges())
+    if(!s.mesh.is_border(e))
+    {
+      EXPECT_LT((s.point(s.mesh.source(s.mesh.halfedge(e))) - s.point(s.mesh.target(s.mesh.halfedge(e)))).norm(), 3)
+        << "a long diagonal was not split";
+    }
+}
+
+// Section 3.2: relaxation improves the triangles and never turns one over, even next to a vertex
+// pushed almost onto its ring's border.
+TEST(Connectivity_pass, RelaxationImprovesWithoutFolding)
+{
+  for(double push : {0.3, 0.45, 0.49})
+  {
+    Work m = to_work(make_equilateral_patch(9, 1.0));
+    // Push an interior vertex towards a neighbour.
+    const Work::Vertex_index v(40), w(41);
+    const GR::Vector_3d p = GR::to_vector(m.point(v)) + 2 * push * (GR::to_vector(m.point(w)) - GR::to_vector(m.point(v)));
+    m.point(v) = GR::Work_kernel::Point_3(p.x(), p.y(), p.z());
+    Pass_setup s(m);
+    const Work before = s.mesh;
+    const double angle_before = PMP::mesh_quality_report(s.mesh).min_angle;
+    EXPECT_GT(s.optimizer().relax(), 0u);
+    expect_pass_guarantees(s, before, "pushed " + std::to_string(push));
+    EXPECT_GT(PMP::mesh_quality_report(s.mesh).min_angle, angle_before);
+  }
+}
+
+// The whole method with its connectivity passes, on meshes with and without features, closed
+// and open: valid, same topology, no new self-intersection, corners kept, better triangles.
+TEST(GraphcutRemeshing, ConnectivityKeepsTheGuarantees)
+{
+  struct Case
+  {
+    std::string name;
+    Mesh mesh;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"noisy sphere", noisy_sphere(3, 0.03, 0.005, 21)});
+  cases.push_back({"jittered box", jittered_box(1, 2, 0.5, 6, 22)});
+  cases.push_back({"torus", make_torus(40, 12, 1.0, 0.3)});
+  cases.push_back({"fandisk", load_sample_mesh("fandisk")});
+  for(Case& c : cases)
+  {
+    const Mesh input = c.mesh;
+    const Work w = to_work(input);
+    const auto stats = PMP::graphcut_isotropic_remeshing(
+      c.mesh, GP::combine(CGAL::parameters::number_of_iterations(20), GP::number_of_greedy_iterations(3)));
+    const Work out = to_work(c.mesh);
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(c.mesh)) << c.name;
+    EXPECT_EQ(euler_characteristic(out), euler_characteristic(w)) << c.name;
+    EXPECT_EQ(components(out), components(w)) << c.name;
+    EXPECT_EQ(stats.connectivity_passes.size(), 4u) << c.name;
+    EXPECT_GT(stats.number_of_flips + stats.number_of_splits + stats.number_of_collapses, 0u) << c.name;
+    std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > pairs;
+    PMP::self_intersections(c.mesh, std::back_inserter(pairs));
+    EXPECT_TRUE(pairs.empty()) << c.name << ": " << pairs.size() << " intersecting pairs";
+    const auto q0 = PMP::mesh_quality_report(input), q1 = PMP::mesh_quality_report(c.mesh);
+    EXPECT_GT(q1.mean_min_angle, q0.mean_min_angle) << c.name;
+    EXPECT_GT(q1.min_angle, 1.0) << c.name << ": degenerate triangle";
+    EXPECT_NEAR(double(q1.number_of_vertices), double(q0.number_of_vertices), 0.15 * double(q0.number_of_vertices))
+      << c.name;
+    // Corners (three or more sharp edges) stay where they were, as vertices of the output.
+    const std::vector<char> sharp = GR::detect_sharp_edges(w, 20, 35);
+    const std::vector<GR::Vertex_kind> kind = GR::classify_vertices(w, sharp, std::vector<char>(w.num_vertices(), 0));
+    std::set<std::array<double, 3> > output_points;
+    for(auto v : vertices(c.mesh))
+      output_points.insert({{c.mesh.point(v).x(), c.mesh.point(v).y(), c.mesh.point(v).z()}});
+    for(auto v : w.vertices())
+    {
+      if(kind[std::size_t(v)] == GR::Vertex_kind::fixed_vertex)
+      {
+        EXPECT_EQ(output_points.count({{w.point(v).x(), w.point(v).y(), w.point(v).z()}}), 1u)
+          << c.name << ": corner " << w.point(v) << " lost";
+      }
+    }
+  }
+}
+
+// The user's constrained edges survive a rebuilt connectivity, and the maps say which they are.
+TEST(GraphcutRemeshing, ConstrainedMapsAreUpdatedWhenTheConnectivityChanges)
+{
+  // A sphere whose valences were scrambled, so that the passes flip edges.
+  Work scrambled = to_work(noisy_sphere(3, 0.03, 0.0, 31));
+  scramble(scrambled, std::vector<char>(scrambled.num_edges(), 0), 33, scrambled.number_of_edges());
+  Mesh m;
+  CGAL::copy_face_graph(scrambled, m);
+  auto ecm = m.add_property_map<Mesh::Edge_index, bool>("e:constrained", false).first;
+  auto vcm = m.add_property_map<Mesh::Vertex_index, bool>("v:constrained", false).first;
+  std::set<std::pair<std::array<double, 3>, std::array<double, 3> > > constrained;
+  auto key = [&m](Mesh::Vertex_index v) { return std::array<double, 3>{{m.point(v).x(), m.point(v).y(), m.point(v).z()}}; };
+  // The equator-crossing loop of edges, as in test_remeshing.
+  for(auto e : edges(m))
+  {
+    const auto h = halfedge(e, m);
+    auto below = [&](Mesh::Face_index f) {
+      for(auto u : vertices_around_face(halfedge(f, m), m))
+        if(m.point(u).z() < 0)
+          return true;
+      return false;
+    };
+    if(below(face(h, m)) != below(face(opposite(h, m), m)))
+      ecm[e] = true;
+  }
+  std::set<std::array<double, 3> > pinned;
+  CGAL::Random rng(32);
+  for(auto v : vertices(m))
+    if(rng.get_int(0, 20) == 0)
+    {
+      vcm[v] = true;
+      pinned.insert(key(v));
+    }
+  std::size_t constrained_count = 0;
+  for(auto e : edges(m))
+    constrained_count += ecm[e] ? 1 : 0;
+  const auto stats = PMP::graphcut_isotropic_remeshing(
+    m, GP::combine(CGAL::parameters::number_of_iterations(15).edge_is_constrained_map(ecm).vertex_is_constrained_map(vcm),
+                   GP::number_of_greedy_iterations(2)));
+  ASSERT_GT(stats.number_of_flips, 0u);
+  std::size_t after = 0;
+  for(auto e : edges(m))
+    after += ecm[e] ? 1 : 0;
+  EXPECT_EQ(after, constrained_count);
+  std::size_t pinned_after = 0;
+  for(auto v : vertices(m))
+    if(vcm[v])
+    {
+      ++pinned_after;
+      EXPECT_EQ(pinned.count(key(v)), 1u) << "a constrained vertex moved";
+    }
+  EXPECT_EQ(pinned_after, pinned.size());
+}
