@@ -68,14 +68,23 @@ class Pass_setup
 {
 public:
   explicit Pass_setup(const Work& m, double length_factor = 1.0, bool sharp_features = true)
-    : mesh(m), reference_mesh(m), reference(reference_mesh)
+    : mesh(m), reference_mesh(m), reference(reference_mesh),
+      reference_feature_edge(features_of(m, sharp_features)),
+      reference_kind(GR::classify_vertices(m, reference_feature_edge, std::vector<char>(m.num_vertices(), 0))),
+      polylines(reference_mesh, reference_feature_edge, reference_kind)
   {
-    state.feature_edge = sharp_features ? GR::detect_sharp_edges(mesh, 20, 35)
-                                        : std::vector<char>(mesh.num_edges(), 0);
+    state.feature_edge = reference_feature_edge;
+    state.kind = reference_kind;
+    state.location.resize(mesh.num_vertices());
+    state.edge_hint.resize(mesh.num_edges());
+    for(auto v : mesh.vertices())
+      if(state.kind[std::size_t(v)] == GR::Vertex_kind::feature_vertex)
+        state.location[std::size_t(v)] = polylines.at_vertex(v);
     for(auto e : mesh.edges())
-      if(mesh.is_border(e))
-        state.feature_edge[std::size_t(e)] = 1;
-    state.kind = GR::classify_vertices(mesh, state.feature_edge, std::vector<char>(mesh.num_vertices(), 0));
+    {
+      const auto h = mesh.halfedge(e);
+      state.edge_hint[std::size_t(e)] = mesh.face(mesh.is_border(h) ? mesh.opposite(h) : h);
+    }
     state.closest.resize(mesh.num_vertices());
     state.vertex_hint.resize(mesh.num_vertices());
     state.frozen.assign(mesh.num_vertices(), 0);
@@ -95,7 +104,21 @@ public:
     input_feature_edges = feature_edges();
   }
 
+  static std::vector<char> features_of(const Work& m, bool sharp_features)
+  {
+    std::vector<char> f = sharp_features ? GR::detect_sharp_edges(m, 20, 35) : std::vector<char>(m.num_edges(), 0);
+    for(auto e : m.edges())
+      if(m.is_border(e))
+        f[std::size_t(e)] = 1;
+    return f;
+  }
+
+  // Without the polylines, as most tests here: no sharp edge is split.
   GR::Connectivity_optimizer optimizer() { return GR::Connectivity_optimizer(mesh, reference, state, sizing); }
+  GR::Connectivity_optimizer optimizer_with_features(GR::Connectivity_optimizer::Local_energy energy = {})
+  {
+    return GR::Connectivity_optimizer(mesh, reference, state, sizing, &polylines, std::move(energy));
+  }
 
   GR::Vector_3d point(Work::Vertex_index v) const { return GR::to_vector(mesh.point(v)); }
 
@@ -136,6 +159,9 @@ public:
   Work mesh;
   const Work reference_mesh;
   GR::Reference_surface<Work> reference;
+  const std::vector<char> reference_feature_edge;
+  const std::vector<GR::Vertex_kind> reference_kind;
+  GR::Feature_polylines<Work> polylines;
   GR::Tracking_state state;
   GR::Sizing sizing;
   std::set<std::pair<std::size_t, std::size_t> > input_feature_edges;
@@ -169,7 +195,8 @@ std::size_t border_halfedges(const Work& m)
 }
 
 // What every pass must keep: a valid manifold mesh of the same topology, no degenerate triangle,
-// none turned over against the reference, feature edges and the vertices on them untouched.
+// none turned over against the reference, the vertices on feature edges untouched and each
+// feature edge still there, or split into feature edges.
 void expect_pass_guarantees(const Pass_setup& s, const Work& before, const std::string& name)
 {
   const Work& m = s.mesh;
@@ -198,11 +225,35 @@ void expect_pass_guarantees(const Pass_setup& s, const Work& before, const std::
   }
   EXPECT_EQ(degenerate, 0u) << name;
   EXPECT_EQ(folded, 0u) << name;
+  std::set<std::size_t> input_feature_vertices;
+  for(const auto& e : s.input_feature_edges)
+    input_feature_vertices.insert({e.first, e.second});
+  // a and b joined by feature edges, through vertices that splits put on the feature.
+  auto joined = [&](Work::Vertex_index a, Work::Vertex_index b) {
+    std::vector<Work::Vertex_index> todo{a};
+    std::set<std::size_t> seen_vertices{std::size_t(a)};
+    while(!todo.empty())
+    {
+      const Work::Vertex_index u = todo.back();
+      todo.pop_back();
+      for(auto h : halfedges_around_source(u, m))
+      {
+        const Work::Vertex_index w = m.target(h);
+        if(!s.state.feature_edge[std::size_t(m.edge(h))] || !seen_vertices.insert(std::size_t(w)).second)
+          continue;
+        if(w == b)
+          return true;
+        if(!input_feature_vertices.count(std::size_t(w)))
+          todo.push_back(w);
+      }
+    }
+    return false;
+  };
   for(const auto& e : s.input_feature_edges)
   {
     const Work::Vertex_index a(static_cast<Work::size_type>(e.first)), b(static_cast<Work::size_type>(e.second));
     ASSERT_FALSE(m.is_removed(a) || m.is_removed(b)) << name << ": a feature vertex was removed";
-    EXPECT_NE(m.halfedge(a, b), Work::null_halfedge()) << name << ": a feature edge was flipped or collapsed";
+    EXPECT_TRUE(joined(a, b)) << name << ": a feature edge was flipped or collapsed";
     EXPECT_EQ(m.point(a), before.point(a)) << name << ": a feature vertex moved in a pass";
     EXPECT_EQ(m.point(b), before.point(b)) << name << ": a feature vertex moved in a pass";
   }
@@ -261,8 +312,7 @@ TEST(Connectivity_pass, KeepsTheGuaranteesOnSeveralMeshes)
     }
 }
 
-// Each flip lowers the sum of |valence - 6| by at least one, and no flip makes a triangle with
-// an angle below the flip floor unless it raised the smallest angle.
+// Flips lower the sum of |valence - 6|; some keep it and raise the smallest angle instead.
 TEST(Connectivity_pass, FlipsLowerTheValenceDeviation)
 {
   for(const Named_mesh& input : scrambled_meshes())
@@ -271,8 +321,55 @@ TEST(Connectivity_pass, FlipsLowerTheValenceDeviation)
     const int before = valence_deviation(s.mesh);
     const std::size_t flips = s.optimizer().flip_edges();
     EXPECT_GT(flips, 10u) << input.name;
-    EXPECT_LE(valence_deviation(s.mesh), before - int(flips)) << input.name;
+    EXPECT_LT(valence_deviation(s.mesh), before - int(flips) / 2) << input.name;
   }
+}
+
+// The rule of each flip, against an independent evaluation of every edge: a flip that would make
+// the valence less regular is never offered; one that keeps it as regular is offered only when
+// the smallest of the six angles grows.
+TEST(Connectivity_pass, FlipRuleOnEveryEdge)
+{
+  std::size_t neutral_offered = 0;
+  for(const Named_mesh& input : scrambled_meshes())
+  {
+    Pass_setup s(input.mesh);
+    const GR::Connectivity_optimizer optimizer = s.optimizer();
+    const Work& m = s.mesh;
+    auto deviation = [&m](Work::Vertex_index v, int delta) {
+      const int target = m.is_border(v) ? 4 : 6;
+      return std::abs(int(m.degree(v)) + delta - target);
+    };
+    std::size_t worse = 0;
+    for(auto e : m.edges())
+    {
+      if(m.is_border(e))
+        continue;
+      const auto h = m.halfedge(e), o = m.opposite(h);
+      const auto a = m.source(h), b = m.target(h), c = m.target(m.next(h)), d = m.target(m.next(o));
+      const int change = deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1) -
+                         deviation(a, 0) - deviation(b, 0) - deviation(c, 0) - deviation(d, 0);
+      const double gain = optimizer.flip_gain(e);
+      if(change > 0)
+      {
+        ++worse;
+        EXPECT_LE(gain, 0) << input.name << ": a flip against the valence is offered";
+      }
+      else if(change == 0 && gain > 0)
+      {
+        ++neutral_offered;
+        const double before = (std::min)(GR::smallest_angle(s.point(a), s.point(b), s.point(c)),
+                                         GR::smallest_angle(s.point(b), s.point(a), s.point(d)));
+        const double after = (std::min)(GR::smallest_angle(s.point(a), s.point(d), s.point(c)),
+                                        GR::smallest_angle(s.point(d), s.point(b), s.point(c)));
+        EXPECT_GT(after, before) << input.name;
+        EXPECT_NEAR(gain, after - before - GR::Connectivity_optimizer::min_angle_margin, 1e-12) << input.name;
+      }
+    }
+    EXPECT_GT(worse, 0u) << input.name;
+  }
+  // The scrambled torus's triangles are too regular for a neutral flip to help; the others' are not.
+  EXPECT_GT(neutral_offered, 0u);
 }
 
 // Collapses happen only on short edges whose both ends are off features and in flat regions.
@@ -430,6 +527,83 @@ TEST(Connectivity_pass, RelaxationImprovesWithoutFolding)
   }
 }
 
+// Long sharp edges are split at a point of their reference polyline: on a long box whose faces
+// are grids of cells cut around their centres, the triangles on the long edges are flat and
+// obtuse, and splitting the edges makes them right-angled. The new vertices lie on the box's
+// edges, slide along them, and the halves of a sharp edge are sharp.
+TEST(Connectivity_pass, LongSharpEdgesAreSplitOnTheirPolyline)
+{
+  for(double scale : {1e-3, 1.0, 1e3})
+  {
+    const std::string name = "box at scale " + std::to_string(scale);
+    Mesh box = jittered_box(4 * scale, scale, scale, 3, 41, true);
+    Pass_setup s(to_work(box));
+    const std::size_t sharp_before = s.feature_edges().size();
+    {
+      // Without the polylines, sharp edges are left whole.
+      Pass_setup plain(to_work(box));
+      plain.optimizer().split_edges();
+      EXPECT_EQ(plain.feature_edges().size(), sharp_before) << name;
+    }
+    const Work before = s.mesh;
+    const std::size_t splits = s.optimizer_with_features().split_edges();
+    EXPECT_GT(splits, 0u) << name;
+    expect_pass_guarantees(s, before, name);
+    const std::size_t sharp_after = s.feature_edges().size();
+    EXPECT_GT(sharp_after, sharp_before) << name;
+    std::size_t new_on_feature = 0;
+    for(auto v : s.mesh.vertices())
+    {
+      if(s.state.kind[std::size_t(v)] != GR::Vertex_kind::feature_vertex || std::size_t(v) < before.num_vertices())
+        continue;
+      ++new_on_feature;
+      // On a box edge: two coordinates at their bounds.
+      const GR::Vector_3d p = s.point(v);
+      const double bounds[3] = {4 * scale, scale, scale};
+      int at_bound = 0;
+      for(int d = 0; d < 3; ++d)
+        at_bound += (std::abs(p[d]) < 1e-12 * scale || std::abs(p[d] - bounds[d]) < 1e-12 * scale) ? 1 : 0;
+      EXPECT_GE(at_bound, 2) << name << ": new vertex " << p.transpose() << " is off the box's edges";
+      EXPECT_LT((s.polylines.point(s.state.location[std::size_t(v)]) - p).norm(), 1e-12 * scale) << name;
+      std::size_t sharp_around = 0;
+      for(auto h : halfedges_around_target(s.mesh.halfedge(v), s.mesh))
+        sharp_around += s.state.feature_edge[std::size_t(s.mesh.edge(h))] ? 1 : 0;
+      EXPECT_EQ(sharp_around, 2u) << name;
+    }
+    EXPECT_EQ(sharp_after - sharp_before, new_on_feature) << name;
+  }
+}
+
+// Beyond the paper, the relaxation keeps only the moves that do not raise the local energy.
+TEST(Connectivity_pass, RelaxationKeepsOnlyMovesThatDoNotRaiseTheLocalEnergy)
+{
+  Work m = to_work(make_equilateral_patch(9, 1.0));
+  const Work::Vertex_index v(40), w(41);
+  const GR::Vector_3d p = GR::to_vector(m.point(v)) + 0.8 * (GR::to_vector(m.point(w)) - GR::to_vector(m.point(v)));
+  m.point(v) = GR::Work_kernel::Point_3(p.x(), p.y(), p.z());
+  {
+    // Every move raises the distance to the starting positions: nothing moves.
+    Pass_setup s(m);
+    const Work start = s.mesh;
+    const std::size_t moved = s.optimizer_with_features([&start](Work::Vertex_index u, const GR::Vector_3d& x) {
+      return (x - GR::to_vector(start.point(u))).squaredNorm();
+    }).relax();
+    EXPECT_EQ(moved, 0u);
+    for(auto u : s.mesh.vertices())
+      EXPECT_EQ(s.mesh.point(u), start.point(u));
+  }
+  {
+    // An energy that only the pushed vertex's way back lowers: only it moves.
+    Pass_setup s(m);
+    const GR::Vector_3d home = GR::to_vector(to_work(make_equilateral_patch(9, 1.0)).point(v));
+    const std::size_t moved = s.optimizer_with_features([&](Work::Vertex_index u, const GR::Vector_3d& x) {
+      return u == v ? (x - home).squaredNorm() : (x - s.point(u)).squaredNorm();
+    }).relax();
+    EXPECT_EQ(moved, 1u);
+    EXPECT_LT((s.point(v) - home).norm(), (p - home).norm());
+  }
+}
+
 // The whole method with its connectivity passes, on meshes with and without features, closed
 // and open: valid, same topology, no new self-intersection, corners kept, better triangles.
 TEST(GraphcutRemeshing, ConnectivityKeepsTheGuarantees)
@@ -438,12 +612,13 @@ TEST(GraphcutRemeshing, ConnectivityKeepsTheGuarantees)
   {
     std::string name;
     Mesh mesh;
+    bool regular; // every valence 6 and even triangles: no operation is needed
   };
   std::vector<Case> cases;
-  cases.push_back({"noisy sphere", noisy_sphere(3, 0.03, 0.005, 21)});
-  cases.push_back({"jittered box", jittered_box(1, 2, 0.5, 6, 22)});
-  cases.push_back({"torus", make_torus(40, 12, 1.0, 0.3)});
-  cases.push_back({"fandisk", load_sample_mesh("fandisk")});
+  cases.push_back({"noisy sphere", noisy_sphere(3, 0.03, 0.005, 21), false});
+  cases.push_back({"jittered box", jittered_box(1, 2, 0.5, 6, 22), false});
+  cases.push_back({"torus", make_torus(40, 12, 1.0, 0.3), true});
+  cases.push_back({"fandisk", load_sample_mesh("fandisk"), false});
   for(Case& c : cases)
   {
     const Mesh input = c.mesh;
@@ -455,14 +630,20 @@ TEST(GraphcutRemeshing, ConnectivityKeepsTheGuarantees)
     EXPECT_EQ(euler_characteristic(out), euler_characteristic(w)) << c.name;
     EXPECT_EQ(components(out), components(w)) << c.name;
     EXPECT_EQ(stats.connectivity_passes.size(), 4u) << c.name;
-    EXPECT_GT(stats.number_of_flips + stats.number_of_splits + stats.number_of_collapses, 0u) << c.name;
+    const std::size_t operations = stats.number_of_flips + stats.number_of_splits + stats.number_of_collapses;
+    if(c.regular)
+      EXPECT_LE(valence_deviation(out), valence_deviation(w)) << c.name;
+    else
+      EXPECT_GT(operations, 0u) << c.name;
     std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > pairs;
     PMP::self_intersections(c.mesh, std::back_inserter(pairs));
     EXPECT_TRUE(pairs.empty()) << c.name << ": " << pairs.size() << " intersecting pairs";
     const auto q0 = PMP::mesh_quality_report(input), q1 = PMP::mesh_quality_report(c.mesh);
     EXPECT_GT(q1.mean_min_angle, q0.mean_min_angle) << c.name;
     EXPECT_GT(q1.min_angle, 1.0) << c.name << ": degenerate triangle";
-    EXPECT_NEAR(double(q1.number_of_vertices), double(q0.number_of_vertices), 0.15 * double(q0.number_of_vertices))
+    // The same order of vertices; the box's cells differ fourfold in size from face to face, so
+    // that its sizing is far from the input's there.
+    EXPECT_NEAR(double(q1.number_of_vertices), double(q0.number_of_vertices), 0.25 * double(q0.number_of_vertices))
       << c.name;
     // Corners (three or more sharp edges) stay where they were, as vertices of the output.
     const std::vector<char> sharp = GR::detect_sharp_edges(w, 20, 35);

@@ -152,8 +152,9 @@ inline Mesh noisy_sphere(unsigned levels, double tangential, double normal, unsi
 }
 
 // A closed box [0, a] x [0, b] x [0, c] whose faces are n x n grids, each slightly jittered
-// inside its face plane so that the triangles are uneven.
-inline Mesh jittered_box(double a, double b, double c, std::size_t n, unsigned seed)
+// inside its face plane so that the triangles are uneven; each cell is cut into two triangles,
+// or with `centred_cells` into four around its centre.
+inline Mesh jittered_box(double a, double b, double c, std::size_t n, unsigned seed, bool centred_cells = false)
 {
   std::vector<Point> points;
   std::vector<std::array<std::size_t, 3> > triangles;
@@ -188,7 +189,17 @@ inline Mesh jittered_box(double a, double b, double c, std::size_t n, unsigned s
             return vertex(ijk[0], ijk[1], ijk[2]);
           };
           const std::size_t p00 = at(u, w), p10 = at(u + 1, w), p11 = at(u + 1, w + 1), p01 = at(u, w + 1);
-          if(side == 0)
+          if(centred_cells)
+          {
+            // A fan of four triangles around the cell's centre, in the order of the outward normal.
+            points.push_back(CGAL::centroid(points[p00], points[p10], points[p11], points[p01]));
+            const std::size_t centre = points.size() - 1;
+            const std::array<std::size_t, 4> cell = side == 0 ? std::array<std::size_t, 4>{{p00, p01, p11, p10}}
+                                                              : std::array<std::size_t, 4>{{p00, p10, p11, p01}};
+            for(std::size_t k = 0; k < 4; ++k)
+              triangles.push_back({{cell[k], cell[(k + 1) % 4], centre}});
+          }
+          else if(side == 0)
           {
             triangles.push_back({{p00, p11, p10}});
             triangles.push_back({{p00, p01, p11}});

@@ -255,7 +255,7 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
     {
       const auto h = halfedge(e, tmesh);
       const auto wh = work.halfedge(to_work(source(h, tmesh)), to_work(target(h, tmesh)));
-      feature_edge[std::size_t(work.edge(wh))] = 1;
+      feature_edge[std::size_t(work.edge(wh))] = GR::Tracking_state::constrained_edge;
       user_edge[std::size_t(work.edge(wh))] = 1;
     }
   std::vector<GR::Vertex_kind> kind = GR::classify_vertices(work, feature_edge, constrained_vertex);

@@ -77,21 +77,19 @@ public:
     m_state.kind = m_reference_kind;
     const std::size_t n = m_mesh.num_vertices();
     m_state.closest.resize(n);
-    m_location.resize(n);
+    m_state.location.resize(n);
     m_state.vertex_hint.resize(n);
     m_state.frozen.assign(n, 0);
     m_state.face_hint.resize(m_mesh.num_faces());
     for(Face f : m_mesh.faces())
       m_state.face_hint[std::size_t(f)] = f;
-    m_feature_edge_slot.assign(m_mesh.num_edges(), Binary_graph_cut::none);
+    m_state.edge_hint.resize(m_mesh.num_edges());
     for(Edge e : m_mesh.edges())
-      if(m_state.feature_edge[std::size_t(e)])
-      {
-        m_feature_edge_slot[std::size_t(e)] = m_feature_edges.size();
-        m_feature_edges.push_back(e);
-        const Halfedge h = m_mesh.halfedge(e);
-        m_edge_hint.push_back(m_mesh.face(m_mesh.is_border(h) ? m_mesh.opposite(h) : h));
-      }
+    {
+      const Halfedge h = m_mesh.halfedge(e);
+      m_state.edge_hint[std::size_t(e)] = m_mesh.face(m_mesh.is_border(h) ? m_mesh.opposite(h) : h);
+    }
+    collect_feature_edges();
     // Intersections the input already has are not the optimisation's doing.
     self_intersecting_pairs(m_mesh, m_input_intersections);
     for(auto& p : m_input_intersections)
@@ -125,7 +123,7 @@ public:
       m_state.closest[std::size_t(v)] = v;
       m_state.vertex_hint[std::size_t(v)] = m_reference.incident_face(v);
       if(kind_of(v) == Vertex_kind::feature_vertex)
-        m_location[std::size_t(v)] = m_polylines.at_vertex(v);
+        m_state.location[std::size_t(v)] = m_polylines.at_vertex(v);
     }
   }
 
@@ -255,7 +253,7 @@ public:
       {
         for(std::size_t i = 0; i < moving.size(); ++i)
           if(labels[i] && kind_of(moving[i]) == Vertex_kind::feature_vertex)
-            m_location[std::size_t(moving[i])] = candidate_location[i];
+            m_state.location[std::size_t(moving[i])] = candidate_location[i];
         return moved;
       }
       for(std::size_t i = 0; i < moving.size(); ++i)
@@ -374,11 +372,11 @@ public:
         for(const Box& b : keep_out)
           if(b.contains(position(v)))
             m_state.frozen[std::size_t(v)] = 1;
-      Connectivity_optimizer optimizer(m_mesh, m_reference, m_state, m_sizing);
+      Connectivity_optimizer optimizer(m_mesh, m_reference, m_state, m_sizing, &m_polylines,
+                                       [this](Vertex v, const Vector_3d& x) { return local_evidence(v, x); });
       const Connectivity_counts counts = optimizer.run();
       m_intersection_frozen.resize(m_mesh.num_vertices(), 0);
-      m_location.resize(m_mesh.num_vertices());
-      m_feature_edge_slot.resize(m_mesh.num_edges(), Binary_graph_cut::none);
+      collect_feature_edges();
       const std::vector<std::pair<Face, Face> > fresh = new_self_intersections();
 #ifdef CGAL_GRAPHCUT_REMESHING_VERBOSE
       std::cerr << "connectivity pass, attempt " << attempt << ": " << counts.flips << " flips, "
@@ -424,6 +422,19 @@ private:
 
   std::array<Vertex, 3> face_vertices(Face f) const { return Graphcut_remeshing::face_vertices(m_mesh, f); }
 
+  // The feature edges of the working mesh and their slots (splits of sharp edges add some).
+  void collect_feature_edges()
+  {
+    m_feature_edges.clear();
+    m_feature_edge_slot.assign(m_mesh.num_edges(), Binary_graph_cut::none);
+    for(Edge e : m_mesh.edges())
+      if(m_state.feature_edge[std::size_t(e)])
+      {
+        m_feature_edge_slot[std::size_t(e)] = m_feature_edges.size();
+        m_feature_edges.push_back(e);
+      }
+  }
+
   // F of eq. (4) in the frame at the point of the reference triangles closest to x, searched from
   // the triangle `hint`.
   double squared_distance(const Vector_3d& x, Face hint) const
@@ -456,7 +467,8 @@ private:
   // leaves a curved feature line; this term makes it pay for that.
   double feature_edge_energy(std::size_t i, const Vector_3d& a, const Vector_3d& b) const
   {
-    return m_options.weights.lambda_data * squared_distance((a + b) / 2, m_edge_hint[i]);
+    return m_options.weights.lambda_data *
+           squared_distance((a + b) / 2, m_state.edge_hint[std::size_t(m_feature_edges[i])]);
   }
 
   // eq. (7): the energy terms that depend on the position x of vertex v.
@@ -484,6 +496,14 @@ private:
   {
     for(Vertex v : m_mesh.vertices())
     {
+      if(kind_of(v) == Vertex_kind::feature_vertex)
+      {
+        // On its polyline: the reference elements come with its place there.
+        const Location& l = m_state.location[std::size_t(v)];
+        const Halfedge h = m_reference_mesh.is_border(l.h) ? m_reference_mesh.opposite(l.h) : l.h;
+        m_state.closest[std::size_t(v)] = m_polylines.nearest_vertex(l);
+        m_state.vertex_hint[std::size_t(v)] = m_reference_mesh.face(h);
+      }
       if(kind_of(v) != Vertex_kind::free_vertex)
         continue;
       const Vector_3d x = position(v);
@@ -500,7 +520,7 @@ private:
     {
       const Halfedge h = m_mesh.halfedge(m_feature_edges[i]);
       m_reference.frame_at_closest_point((position(m_mesh.source(h)) + position(m_mesh.target(h))) / 2,
-                                         m_edge_hint[i]);
+                                         m_state.edge_hint[std::size_t(m_feature_edges[i])]);
     }
   }
 
@@ -583,7 +603,7 @@ private:
   bool propose_on_feature(Vertex v, const Vector_3d& x, const Link& link, double before,
                           double temperature, bool greedy, Vector_3d& out, Location& out_location)
   {
-    const Location here = m_location[std::size_t(v)];
+    const Location here = m_state.location[std::size_t(v)];
     // The polyline is followed exactly, so its curvature does not limit the sphere.
     const double sigma = freedom_radius(temperature, ring_radius(x, link), 1.0);
     if(!(sigma > 0))
@@ -646,9 +666,7 @@ private:
   std::vector<Box> m_keep_out;             // regions where connectivity changes made intersections
   std::vector<Edge> m_feature_edges; // the feature edges of the working mesh
   std::vector<std::size_t> m_feature_edge_slot; // by edge index: position in m_feature_edges
-  std::vector<Face> m_edge_hint;     // reference triangle nearest to each feature edge's midpoint
   std::vector<std::pair<Face, Face> > m_input_intersections; // sorted
-  std::vector<Location> m_location;  // place on the reference polyline of each feature vertex
 };
 
 } // namespace Graphcut_remeshing
