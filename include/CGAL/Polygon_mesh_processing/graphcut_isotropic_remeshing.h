@@ -62,7 +62,8 @@ struct Default_visitor
  * the paper's section 3: edge flips, splits of long edges, collapses of short edges in flat
  * regions and vertex splits, each kept only when it improves its own criterion and only where the
  * valence can improve, then a tangential relaxation of the vertex positions. Feature edges are
- * never flipped or collapsed, and no edge next to one is collapsed. The number of vertices adapts
+ * never flipped or collapsed, and no edge next to one is collapsed; a long sharp or border edge
+ * may be split at a point of its input polyline (never a constrained edge). The number of vertices adapts
  * to the local curvature but stays of the order of the input's. When the connectivity changes,
  * `tmesh` is rebuilt: its elements are replaced, and the constrained maps are updated.
  *
@@ -167,6 +168,12 @@ struct Default_visitor
  *                           `false` the connectivity of `tmesh` is left as it is}
  *     \cgalParamType{`bool`}
  *     \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::connectivity_period}
+ *     \cgalParamDescription{the connectivity is optimised after every this many iterations of
+ *                           the first phase; 0 never does}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{`5`}
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
