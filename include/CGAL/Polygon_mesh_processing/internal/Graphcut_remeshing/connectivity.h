@@ -113,8 +113,8 @@ class Connectivity_optimizer
   using Location = Feature_polylines<Work_mesh>::Location;
 
 public:
-  // Collapses only where every dihedral angle around the edge is below this (section 3.1).
-  static constexpr double flat_dihedral = 10 * pi / 180;
+  // Collapses only of edges whose dihedral angle is below this, in degrees (section 3.1).
+  static constexpr double flat_dihedral = 10;
   // A valence-improving flip whose six angles stay above this is kept (see flip_gain).
   static constexpr double flip_angle_floor = 25 * pi / 180;
   // The least growth of an angle that counts as an improvement (0.01 degree).
@@ -309,7 +309,7 @@ public:
                        deviation_change(d, -1);
     if(change >= 0 || merged < 4)
       return 0;
-    if(!is_flat_around(a) || !is_flat_around(b))
+    if(!(dihedral_angle(m_mesh, e) < flat_dihedral))
       return 0;
     if(!CGAL::Euler::does_satisfy_link_condition(e, m_mesh))
       return 0;
@@ -659,23 +659,6 @@ private:
   {
     return (std::min)(m_sizing.length(m_reference.frame(m_state.closest[std::size_t(a)])),
                       m_sizing.length(m_reference.frame(m_state.closest[std::size_t(b)])));
-  }
-
-  // Every dihedral angle (between face normals) at the edges around v is below flat_dihedral.
-  bool is_flat_around(Vertex v) const
-  {
-    for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
-    {
-      if(m_mesh.is_border(h) || m_mesh.is_border(m_mesh.opposite(h)))
-        return false;
-      const auto t = face_vertices(m_mesh, m_mesh.face(h));
-      const auto u = face_vertices(m_mesh, m_mesh.face(m_mesh.opposite(h)));
-      const Vector_3d n1 = area_vector(position(t[0]), position(t[1]), position(t[2]));
-      const Vector_3d n2 = area_vector(position(u[0]), position(u[1]), position(u[2]));
-      if(!(angle_between(n1, n2) < flat_dihedral))
-        return false;
-    }
-    return true;
   }
 
   // A new or moved vertex is tracked from its neighbour's reference elements, then by the same

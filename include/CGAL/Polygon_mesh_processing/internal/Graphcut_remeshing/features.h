@@ -37,8 +37,12 @@ double dihedral_angle(const Mesh& m, typename Mesh::Edge_index e)
   return to_degrees(angle_between(normal(h), normal(o)));
 }
 
-// eq. (8): sharp above theta_true, not sharp below theta_false, and in between sharp only when at
-// least two edges sharing an end point with it are above theta_true. Indexed by edge index.
+// eq. (8): sharp above theta_true, not sharp below theta_false, and in between sharp only when it
+// continues edges above theta_true at both its ends: of the paper's "at least two neighbouring
+// edges", one at each end. (Two at the same end would also make a noisy organic mesh's in-between
+// edges sharp where strong ones meet, and their ends corners: on triceratops that gave 557 corners
+// against 441, a third of the triangles touching one, and mean angles 1.2 and 1.3 degrees worse.)
+// Indexed by edge index.
 template <typename Mesh>
 std::vector<char> detect_sharp_edges(const Mesh& m, double theta_false, double theta_true)
 {
@@ -53,13 +57,14 @@ std::vector<char> detect_sharp_edges(const Mesh& m, double theta_false, double t
       sharp[std::size_t(e)] = 1;
     else if(t >= theta_false)
     {
-      int strong = 0;
       const auto h = m.halfedge(e);
-      for(auto end : {h, m.opposite(h)})
+      auto continued_at = [&](decltype(h) end) {
         for(auto g : halfedges_around_target(end, m))
           if(m.edge(g) != e && theta[std::size_t(m.edge(g))] > theta_true)
-            ++strong;
-      sharp[std::size_t(e)] = strong >= 2 ? 1 : 0;
+            return true;
+        return false;
+      };
+      sharp[std::size_t(e)] = continued_at(h) && continued_at(m.opposite(h)) ? 1 : 0;
     }
   }
   return sharp;
