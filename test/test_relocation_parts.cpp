@@ -881,6 +881,44 @@ TEST(Features, HysteresisAlongACrease)
   }
 }
 
+// eq. (8) on the paper's models, against an evaluation of each edge from its dihedral angles: an
+// edge between 20 and 35 degrees is sharp exactly when edges above 35 degrees meet it at both ends.
+// Where two strong edges meet it at one end only it is not sharp (and that end not made a corner);
+// the organic models have many such edges.
+TEST(Features, HysteresisOnThePaperModels)
+{
+  for(const std::string name : {"fandisk", "cow", "triceratops"})
+  {
+    const Work_mesh m = to_work_mesh(load_sample_mesh(name));
+    const std::vector<char> sharp = GR::detect_sharp_edges(m, 20, 35);
+    std::size_t in_between = 0, one_sided = 0;
+    for(auto e : m.edges())
+    {
+      const double theta = GR::dihedral_angle(m, e);
+      if(theta > 35 || theta < 20)
+      {
+        EXPECT_EQ(sharp[std::size_t(e)] != 0, theta > 35) << name;
+        continue;
+      }
+      ++in_between;
+      std::array<int, 2> strong{{0, 0}};
+      for(int end = 0; end < 2; ++end)
+      {
+        const auto h = end == 0 ? m.halfedge(e) : m.opposite(m.halfedge(e));
+        for(auto g : halfedges_around_target(h, m))
+          strong[end] += m.edge(g) != e && GR::dihedral_angle(m, m.edge(g)) > 35 ? 1 : 0;
+      }
+      EXPECT_EQ(sharp[std::size_t(e)] != 0, strong[0] > 0 && strong[1] > 0) << name;
+      one_sided += (strong[0] >= 2 && strong[1] == 0) || (strong[1] >= 2 && strong[0] == 0) ? 1 : 0;
+    }
+    EXPECT_GT(in_between, 0u) << name;
+    if(name != "fandisk")
+    {
+      EXPECT_GT(one_sided, 10u) << name;
+    }
+  }
+}
+
 TEST(Features, VertexKindsOnACube)
 {
   const int n = 3;
