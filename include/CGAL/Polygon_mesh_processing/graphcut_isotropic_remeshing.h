@@ -62,9 +62,9 @@ struct Default_visitor
  * the paper's section 3: edge flips, splits of long edges, collapses of short edges in flat
  * regions and vertex splits, each kept only when it improves its own criterion and only where the
  * valence can improve, then a tangential relaxation of the vertex positions. Feature edges are
- * never flipped or collapsed, and no edge next to one is collapsed; a long sharp or border edge
- * may be split at a point of its input polyline (never a constrained edge). The number of vertices adapts
- * to the local curvature but stays of the order of the input's. When the connectivity changes,
+ * never flipped or collapsed, and no edge next to one is collapsed; a long sharp edge may be split
+ * at a point of its input polyline (border and constrained edges never are). The number of
+ * vertices adapts to the local curvature but stays of the order of the input's. When the connectivity changes,
  * `tmesh` is rebuilt: its elements are replaced, and the constrained maps are updated.
  *
  * @tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`

@@ -554,6 +554,7 @@ public:
         normals.push_back(area_vector(x, q, p));
       }
       const Vector_3d normal = m_reference.frame(m_state.closest[std::size_t(v)]).normal;
+      const double energy_here = m_local_energy ? m_local_energy(v, x) : 0;
       auto try_move = [&](const Vector_3d& target) {
         const Vector_3d y = project(x + tangential(target - x, normal), v);
         for(std::size_t k = 0; k < link.size(); ++k)
@@ -562,7 +563,7 @@ public:
         // Beyond the paper: a move that raises the local energy is not kept. Plain smoothing
         // undoes the fit of the relocation where the surface is curved (on fandisk it raised
         // the RMS distance by a third).
-        if(m_local_energy && !(m_local_energy(v, y) <= m_local_energy(v, x)))
+        if(m_local_energy && !(m_local_energy(v, y) <= energy_here))
           return false;
         m_mesh.point(v) = Work_kernel::Point_3(y.x(), y.y(), y.z());
         return true;

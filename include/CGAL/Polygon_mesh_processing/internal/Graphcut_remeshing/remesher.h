@@ -403,6 +403,7 @@ public:
         }
       m_mesh = mesh_before;
       m_state = state_before;
+      collect_feature_edges(); // the undone pass may have split feature edges
       ++stats.number_of_undone_passes;
     }
   }
