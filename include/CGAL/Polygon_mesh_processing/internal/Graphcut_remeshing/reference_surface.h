@@ -36,11 +36,19 @@ public:
   // smooth sheet for closest-point tracking.
   static constexpr double smooth_cosine = 0.93969262078590838; // cos(20 degrees)
 
-  explicit Reference_surface(const Mesh& m) : m_mesh(m) { compute_frames(); }
+  explicit Reference_surface(const Mesh& m) : m_mesh(m)
+  {
+    collect_faces();
+    compute_frames();
+    // A degenerate triangle takes the normal of its first vertex.
+    for(Face_record& r : m_faces)
+      if(r.normal == Vector_3d::Zero())
+        r.normal = frame(r.vertices[0]).normal;
+  }
 
   const Mesh& mesh() const { return m_mesh; }
   const Local_frame& frame(Vertex v) const { return m_frames[std::size_t(v)]; }
-  Vector_3d point(Vertex v) const { return to_vector(m_mesh.point(v)); }
+  Vector_3d point(Vertex v) const { return m_points[std::size_t(v)]; }
 
   // Local search of section 2.1: from `start`, move to a neighbour closer to x while there is one.
   Vertex closest_vertex(const Vector_3d& x, Vertex start) const
@@ -76,36 +84,51 @@ public:
   // x - origin is along the normal and eq. (4) is the exact squared distance to the reference.
   Local_frame frame_at_closest_point(const Vector_3d& x, Face& hint) const
   {
-    auto project = [&](Face f, std::array<double, 3>& weights) {
-      const std::array<Vertex, 3> g = face_vertices(f);
-      return closest_point_on_triangle(x, point(g[0]), point(g[1]), point(g[2]), weights);
-    };
     std::array<double, 3> w;
-    Vector_3d c = project(hint, w);
+    const Vector_3d c = closest_point(x, hint, w);
+    return frame_at(hint, c, w);
+  }
+
+  // F of eq. (4) at x, in the frame at the closest point of the reference triangles (searched
+  // from `hint`, updated). When that point is inside a triangle, x - origin is along the normal
+  // and F is the squared distance: no frame is needed.
+  double approximate_squared_distance(const Vector_3d& x, Face& hint, double epsilon) const
+  {
+    std::array<double, 3> w;
+    const Vector_3d c = closest_point(x, hint, w);
+    if(w[0] > 0 && w[1] > 0 && w[2] > 0)
+      return (x - c).squaredNorm();
+    return squared_distance_approximation(x, frame_at(hint, c, w), epsilon);
+  }
+
+  // The descent of frame_at_closest_point: the closest point, its triangle (in `hint`) and its
+  // barycentric coordinates there.
+  Vector_3d closest_point(const Vector_3d& x, Face& hint, std::array<double, 3>& w) const
+  {
+    Vector_3d c = project(x, hint, w);
     double best = (x - c).squaredNorm();
     for(std::size_t guard = 0; guard < m_mesh.number_of_faces(); ++guard)
     {
-      const std::array<Vertex, 3> t = face_vertices(hint);
+      const Face_record& r = m_faces[std::size_t(hint)];
       Face next_face = hint;
       const int zeros = (w[0] == 0) + (w[1] == 0) + (w[2] == 0);
       if(zeros == 1)
       {
         // On the edge opposite the vertex of weight 0: look across it.
         const int i = w[0] == 0 ? 0 : (w[1] == 0 ? 1 : 2);
-        const auto h = m_mesh.halfedge(t[(i + 1) % 3], t[(i + 2) % 3]);
-        if(h != Mesh::null_halfedge() && !m_mesh.is_border(m_mesh.opposite(h)))
-          next_face = m_mesh.face(m_mesh.opposite(h));
+        if(r.across[i] != Mesh::null_face())
+          next_face = r.across[i];
       }
       else if(zeros == 2)
       {
         // At a vertex: the closest of the triangles around it.
-        const Vertex u = t[w[0] == 1 ? 0 : (w[1] == 1 ? 1 : 2)];
+        const Vertex u = r.vertices[w[0] == 1 ? 0 : (w[1] == 1 ? 1 : 2)];
         double around = best;
         for(auto h : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
           if(!m_mesh.is_border(h))
           {
             std::array<double, 3> wg;
-            const double d = (x - project(m_mesh.face(h), wg)).squaredNorm();
+            const double d = (x - project(x, m_mesh.face(h), wg)).squaredNorm();
             if(d < around)
             {
               around = d;
@@ -118,7 +141,7 @@ public:
       double d = best;
       if(next_face != hint)
       {
-        cg = project(next_face, wg);
+        cg = project(x, next_face, wg);
         d = (x - cg).squaredNorm();
       }
       if(!(d < best))
@@ -128,23 +151,23 @@ public:
         // stopping. Not across a sharp edge: there the other sheet may be closer (a thin part,
         // a concave crease) and tracking must stay on the side it came from.
         next_face = hint;
-        const Vector_3d n = area_vector(point(t[0]), point(t[1]), point(t[2]));
-        for(auto h : halfedges_around_face(m_mesh.halfedge(hint), m_mesh))
+        for(int i : {2, 0, 1}) // the order of the face's halfedges
         {
-          const auto o = m_mesh.opposite(h);
-          if(m_mesh.is_border(o))
+          if(!((r.smooth_across >> i) & 1))
             continue;
-          const std::array<Vertex, 3> to = face_vertices(m_mesh.face(o));
-          const Vector_3d no = area_vector(point(to[0]), point(to[1]), point(to[2]));
-          if(!(n.dot(no) > smooth_cosine * n.norm() * no.norm()))
+          const Face o = r.across[i];
+          // The distance to a triangle is at least the distance to its plane.
+          const Face_record& ro = m_faces[std::size_t(o)];
+          const double to_plane = ro.normal.dot(x - point(ro.vertices[0]));
+          if(to_plane * to_plane > d * (1 + 1e-9))
             continue;
           std::array<double, 3> wo;
-          const Vector_3d co = project(m_mesh.face(o), wo);
+          const Vector_3d co = project(x, o, wo);
           const double dn = (x - co).squaredNorm();
           if(dn < d)
           {
             d = dn;
-            next_face = m_mesh.face(o);
+            next_face = o;
             wg = wo;
             cg = co;
           }
@@ -157,18 +180,23 @@ public:
       w = wg;
       c = cg;
     }
+    return c;
+  }
 
-    const std::array<Vertex, 3> t = face_vertices(hint);
+  // The frame at point c of triangle f, of barycentric coordinates w.
+  Local_frame frame_at(Face f, const Vector_3d& c, const std::array<double, 3>& w) const
+  {
+    const Face_record& r = m_faces[std::size_t(f)];
     Local_frame result;
     result.origin = c;
-    const Vector_3d n = area_vector(point(t[0]), point(t[1]), point(t[2]));
-    result.normal = n.norm() > 0 ? Vector_3d(n.normalized()) : frame(t[0]).normal;
+    result.normal = r.normal;
+    const Local_frame& f0 = frame(r.vertices[0]);
     Vector_3d d1 = Vector_3d::Zero();
     for(int i = 0; i < 3; ++i)
     {
-      const Local_frame& fi = frame(t[i]);
+      const Local_frame& fi = frame(r.vertices[i]);
       // Principal directions are defined up to sign: align them before averaging.
-      d1 += w[i] * (fi.d1.dot(frame(t[0]).d1) < 0 ? Vector_3d(-fi.d1) : fi.d1);
+      d1 += w[i] * (fi.d1.dot(f0.d1) < 0 ? Vector_3d(-fi.d1) : fi.d1);
       result.k1 += w[i] * fi.k1;
       result.k2 += w[i] * fi.k2;
     }
@@ -189,7 +217,7 @@ public:
     return Mesh::null_face();
   }
 
-  std::array<Vertex, 3> face_vertices(Face f) const { return Graphcut_remeshing::face_vertices(m_mesh, f); }
+  std::array<Vertex, 3> face_vertices(Face f) const { return m_faces[std::size_t(f)].vertices; }
 
   // Area-weighted vertex normal (unit, or zero for an isolated vertex).
   Vector_3d area_weighted_normal(Vertex v) const
@@ -206,6 +234,60 @@ public:
   }
 
 private:
+  // What the descent reads of a triangle, in flat arrays: the reference never changes, and the
+  // descent runs for every term of every energy evaluation.
+  struct Face_record
+  {
+    std::array<Vertex, 3> vertices;  // in the order of the face's halfedges
+    std::array<Face, 3> across;      // the triangle across the edge opposite vertices[i], or null
+    unsigned char smooth_across = 0; // bit i: across[i] is within smooth_cosine of this triangle
+    Vector_3d normal = Vector_3d::UnitZ();
+  };
+
+  Vector_3d project(const Vector_3d& x, Face f, std::array<double, 3>& weights) const
+  {
+    const std::array<Vertex, 3>& t = m_faces[std::size_t(f)].vertices;
+    return closest_point_on_triangle(x, point(t[0]), point(t[1]), point(t[2]), weights);
+  }
+
+  void collect_faces()
+  {
+    m_points.resize(m_mesh.num_vertices());
+    for(Vertex v : m_mesh.vertices())
+      m_points[std::size_t(v)] = to_vector(m_mesh.point(v));
+    m_faces.assign(m_mesh.num_faces(), Face_record());
+    for(Face f : m_mesh.faces())
+    {
+      Face_record& r = m_faces[std::size_t(f)];
+      r.vertices = Graphcut_remeshing::face_vertices(m_mesh, f);
+      const auto h = m_mesh.halfedge(f);
+      // The edge opposite vertices[i]: next(h) for 0, prev(h) for 1, h for 2.
+      const std::array<typename Mesh::Halfedge_index, 3> side{{m_mesh.next(h), m_mesh.prev(h), h}};
+      for(int i = 0; i < 3; ++i)
+      {
+        const auto o = m_mesh.opposite(side[i]);
+        r.across[i] = m_mesh.is_border(o) ? Mesh::null_face() : m_mesh.face(o);
+      }
+    }
+    auto area_vector_of = [&](Face f) {
+      const std::array<Vertex, 3>& t = m_faces[std::size_t(f)].vertices;
+      return area_vector(point(t[0]), point(t[1]), point(t[2]));
+    };
+    for(Face f : m_mesh.faces())
+    {
+      Face_record& r = m_faces[std::size_t(f)];
+      const Vector_3d n = area_vector_of(f);
+      for(int i = 0; i < 3; ++i)
+        if(r.across[i] != Mesh::null_face())
+        {
+          const Vector_3d no = area_vector_of(r.across[i]);
+          if(n.dot(no) > smooth_cosine * n.norm() * no.norm())
+            r.smooth_across |= static_cast<unsigned char>(1 << i);
+        }
+      r.normal = n.norm() > 0 ? Vector_3d(n.normalized()) : Vector_3d::Zero();
+    }
+  }
+
   // Principal curvatures, directions and normal from a degree-2 jet fitted to the 2-ring (a wider
   // ring where the 2-ring has fewer than the six points a quadric needs), oriented like the
   // area-weighted normal. Where no quadric can be fitted the frame is flat.
@@ -285,6 +367,8 @@ private:
   }
 
   const Mesh& m_mesh;
+  std::vector<Vector_3d> m_points;     // by vertex
+  std::vector<Face_record> m_faces;    // by face
   std::vector<Local_frame> m_frames;
 };
 

@@ -13,11 +13,10 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/connectivity.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/intersections.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Random.h>
 #include <CGAL/property_map.h>
 
@@ -28,6 +27,7 @@
 #endif
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -91,10 +91,7 @@ public:
     }
     collect_feature_edges();
     // Intersections the input already has are not the optimisation's doing.
-    self_intersecting_pairs(m_mesh, m_input_intersections);
-    for(auto& p : m_input_intersections)
-      p = ordered(p);
-    std::sort(m_input_intersections.begin(), m_input_intersections.end());
+    m_input_intersections = Triangle_intersections(m_mesh).all_pairs();
     // Faces the input already made intersect are left to the relocation: no connectivity change
     // touches them, so their indices, and the list above, stay valid.
     m_intersection_frozen.assign(n, 0);
@@ -237,8 +234,11 @@ public:
           ++moved;
         }
       }
+      std::vector<char> touched(n, 0);
+      for(std::size_t i = 0; i < moving.size(); ++i)
+        touched[std::size_t(moving[i])] = labels[i];
       bool clean = true;
-      for(const auto& pair : new_self_intersections())
+      for(const auto& pair : new_self_intersections(&touched))
         for(Face f : {pair.first, pair.second})
           for(Vertex u : face_vertices(f))
           {
@@ -329,29 +329,18 @@ public:
 
   void set_position(Vertex v, const Vector_3d& p) { m_mesh.point(v) = Work_kernel::Point_3(p.x(), p.y(), p.z()); }
 
-  // Pairs of intersecting triangles that did not intersect in the input (exact predicates).
-  std::vector<std::pair<Face, Face> > new_self_intersections() const
+  // Pairs of intersecting triangles that did not intersect in the input (exact predicates); with
+  // `touched` (by vertex), only pairs with a triangle incident to a touched vertex, which are all
+  // the new ones when the mesh had none before those vertices moved.
+  std::vector<std::pair<Face, Face> > new_self_intersections(const std::vector<char>* touched = nullptr) const
   {
-    std::vector<std::pair<Face, Face> > pairs, fresh;
-    self_intersecting_pairs(m_mesh, pairs);
-    for(const auto& p : pairs)
-      if(!std::binary_search(m_input_intersections.begin(), m_input_intersections.end(), ordered(p)))
-        fresh.push_back(p);
+    Triangle_intersections intersections(m_mesh);
+    const std::vector<std::pair<Face, Face> > pairs =
+      touched ? intersections.pairs_touching(*touched) : intersections.all_pairs();
+    std::vector<std::pair<Face, Face> > fresh;
+    std::set_difference(pairs.begin(), pairs.end(), m_input_intersections.begin(),
+                        m_input_intersections.end(), std::back_inserter(fresh));
     return fresh;
-  }
-
-  static std::pair<Face, Face> ordered(const std::pair<Face, Face>& p)
-  {
-    return p.first < p.second ? p : std::make_pair(p.second, p.first);
-  }
-
-  static void self_intersecting_pairs(const Work_mesh& m, std::vector<std::pair<Face, Face> >& out)
-  {
-    using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-    using Point_map = Work_mesh::Property_map<Vertex, Work_kernel::Point_3>;
-    CGAL::Cartesian_converter_property_map<Epick::Point_3, Point_map> exact_points(m.points());
-    CGAL::Polygon_mesh_processing::self_intersections(
-      m, std::back_inserter(out), CGAL::parameters::vertex_point_map(exact_points).geom_traits(Epick()));
   }
 
   const Reference_surface<Work_mesh>& reference() const { return m_reference; }
@@ -440,8 +429,7 @@ private:
   // the triangle `hint`.
   double squared_distance(const Vector_3d& x, Face hint) const
   {
-    return squared_distance_approximation(x, m_reference.frame_at_closest_point(x, hint),
-                                          m_options.weights.epsilon);
+    return m_reference.approximate_squared_distance(x, hint, m_options.weights.epsilon);
   }
 
   // lambda_data F(x) for a free vertex; vertices on features lie on the reference polylines by
@@ -472,14 +460,21 @@ private:
            squared_distance((a + b) / 2, m_state.edge_hint[std::size_t(m_feature_edges[i])]);
   }
 
-  // eq. (7): the energy terms that depend on the position x of vertex v.
-  double local_evidence(Vertex v, const Vector_3d& x) const
+  // eq. (7): the energy terms that depend on the position x of vertex v. The terms are not
+  // negative: once their sum reaches `bound` the rest is not evaluated (a candidate that reaches
+  // the current local evidence is refused whatever the rest adds).
+  double local_evidence(Vertex v, const Vector_3d& x,
+                        double bound = std::numeric_limits<double>::infinity()) const
   {
     double u = data_energy(v, x);
     for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
       if(!m_mesh.is_border(h))
+      {
+        if(!(u < bound))
+          return u;
         u += triangle_energy(m_mesh.face(h), x, position(m_mesh.target(m_mesh.next(h))),
                              position(m_mesh.source(h)));
+      }
     if(kind_of(v) == Vertex_kind::feature_vertex)
       for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
       {
@@ -550,7 +545,7 @@ private:
     if(!(sigma > 0))
       return false;
     auto accept = [&](const Vector_3d& c) {
-      if(!((c - x).norm() <= sigma) || !(local_evidence(v, c) < before))
+      if(!((c - x).norm() <= sigma) || !(local_evidence(v, c, before) < before))
         return false;
       out = c;
       return true;
@@ -612,7 +607,7 @@ private:
     auto accept = [&](const Vector_3d& displacement) {
       const Location l = m_polylines.move(here, displacement);
       const Vector_3d c = m_polylines.point(l);
-      if(!((c - x).norm() <= sigma) || (c - x).norm() == 0 || !(local_evidence(v, c) < before))
+      if(!((c - x).norm() <= sigma) || (c - x).norm() == 0 || !(local_evidence(v, c, before) < before))
         return false;
       out = c;
       out_location = l;
