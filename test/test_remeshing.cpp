@@ -18,9 +18,14 @@
 
 #include <gtest/gtest.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -259,6 +264,39 @@ TEST(GraphcutRemeshing, SameSeedSameResult)
   const std::vector<Point> a = run(1), b = run(1), c = run(2);
   EXPECT_TRUE(a == b);
   EXPECT_FALSE(a == c);
+}
+
+// The candidates, tables and intersection queries run on TBB's threads when CGAL is linked with
+// TBB: the remesh must be the same, coordinate for coordinate and face for face, on one thread.
+TEST(GraphcutRemeshing, SameResultOnOneThreadAndOnAll)
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  GTEST_SKIP() << "CGAL is not linked with TBB: the remesher runs on one thread";
+#else
+  std::vector<std::pair<std::string, Mesh> > cases;
+  cases.push_back({"noisy sphere", noisy_sphere(3, 0.03, 0.01, 6)});
+  cases.push_back({"jittered box", jittered_box(1, 2, 0.5, 6, 2)});
+  cases.push_back({"fandisk", load_sample_mesh("fandisk")});
+  auto run = [](const Mesh& input, std::size_t threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    Mesh m = input;
+    PMP::graphcut_isotropic_remeshing(m, GP::combine(CGAL::parameters::number_of_iterations(15),
+                                                     GP::number_of_greedy_iterations(5)));
+    std::vector<double> out;
+    for(auto v : vertices(m))
+      out.insert(out.end(), {m.point(v).x(), m.point(v).y(), m.point(v).z()});
+    for(auto f : faces(m))
+      for(auto v : vertices_around_face(halfedge(f, m), m))
+        out.push_back(double(v));
+    return out;
+  };
+  for(const auto& c : cases)
+  {
+    const std::vector<double> one = run(c.second, 1), all = run(c.second, 2);
+    EXPECT_EQ(one.size(), all.size()) << c.first;
+    EXPECT_TRUE(one == all) << c.first;
+  }
+#endif
 }
 
 TEST(GraphcutRemeshing, VisitorSeesEveryIterationAndCanStop)

@@ -31,6 +31,8 @@ const char* const usage =
   "  --iterations N          non-greedy relocation iterations (default 150)\n"
   "  --greedy-iterations N   final greedy iterations (default 20)\n"
   "  --lambda-data X         weight of the data term, unit-box scale (default 1e7)\n"
+  "  --face-data-weight X    weight of the data term at triangle centroids, relative to\n"
+  "                          lambda-data (default 0.05)\n"
   "  --seed N                random seed; same input and seed, same output (default 0)\n"
   "  --no-connectivity       relocate vertices only, never change the connectivity\n"
   "  --quiet                 print nothing but errors\n"
@@ -60,7 +62,7 @@ bool parse_number(const std::string& text, T& value)
 int main(int argc, char** argv)
 {
   std::size_t iterations = 150, greedy_iterations = 20;
-  double lambda_data = 1e7;
+  double lambda_data = 1e7, face_data_weight = 0.05;
   unsigned int seed = 0;
   bool quiet = false, connectivity = true;
   std::string json_file;
@@ -84,6 +86,7 @@ int main(int argc, char** argv)
     else if(arg == "--iterations") value(iterations);
     else if(arg == "--greedy-iterations") value(greedy_iterations);
     else if(arg == "--lambda-data") value(lambda_data);
+    else if(arg == "--face-data-weight") value(face_data_weight);
     else if(arg == "--seed") value(seed);
     else if(arg == "--no-connectivity") connectivity = false;
     else if(arg == "--quiet") quiet = true;
@@ -119,7 +122,7 @@ int main(int argc, char** argv)
     const PMP::Graphcut_remeshing_statistics stats = PMP::graphcut_isotropic_remeshing(
       mesh, GP::combine(CGAL::parameters::number_of_iterations(iterations).random_seed(seed),
                         GP::number_of_greedy_iterations(greedy_iterations), GP::lambda_data(lambda_data),
-                        GP::do_connectivity_optimization(connectivity)));
+                        GP::face_data_weight(face_data_weight), GP::do_connectivity_optimization(connectivity)));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     if(!CGAL::IO::write_polygon_mesh(files[1], mesh, CGAL::parameters::stream_precision(17)))

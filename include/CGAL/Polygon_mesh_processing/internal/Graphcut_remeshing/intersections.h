@@ -8,6 +8,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_INTERSECTIONS_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_INTERSECTIONS_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
 #include <CGAL/Bbox_3.h>
@@ -90,36 +91,48 @@ public:
       for_each_cell(m_boxes[std::size_t(f)], [&](const Cell& c) { ++m_start[bucket(c, buckets) + 1]; });
     for(std::size_t i = 0; i < buckets; ++i)
       m_start[i + 1] += m_start[i];
+    // Each entry carries what the scans read, so that a bucket is read in one sweep.
     m_listed.resize(entries);
     std::vector<std::size_t> fill(m_start.begin(), m_start.end() - 1);
     for(Face f : m_mesh.faces())
-      for_each_cell(m_boxes[std::size_t(f)], [&](const Cell& c) { m_listed[fill[bucket(c, buckets)]++] = f; });
-
-    for(Face f : m_mesh.faces())
-    {
-      if(!query[std::size_t(f)])
-        continue;
-      const CGAL::Bbox_3& bf = m_boxes[std::size_t(f)];
-      for_each_cell(bf, [&](const Cell& c) {
-        const std::size_t k = bucket(c, buckets);
-        for(std::size_t e = m_start[k]; e < m_start[k + 1]; ++e)
-        {
-          const Face g = m_listed[e];
-          // A pair of two queried triangles once, from its smaller one.
-          if(g == f || (query[std::size_t(g)] && g < f))
-            continue;
-          const CGAL::Bbox_3& bg = m_boxes[std::size_t(g)];
-          if(!CGAL::do_overlap(bf, bg))
-            continue;
-          const Cell low = cell_of((std::max)(bf.xmin(), bg.xmin()), (std::max)(bf.ymin(), bg.ymin()),
-                                   (std::max)(bf.zmin(), bg.zmin()));
-          if(low != c)
-            continue;
-          if(intersect(f, g))
-            out.push_back(f < g ? Face_pair(f, g) : Face_pair(g, f));
-        }
+      for_each_cell(m_boxes[std::size_t(f)], [&](const Cell& c) {
+        m_listed[fill[bucket(c, buckets)]++] = Entry{m_boxes[std::size_t(f)], f, query[std::size_t(f)]};
       });
-    }
+
+    // The queries by blocks of triangles, each block into its own list.
+    const std::size_t block = 1024, number_of_blocks = (nf + block - 1) / block;
+    std::vector<std::vector<Face_pair> > found(number_of_blocks);
+    for_each_index(number_of_blocks, [&](std::size_t bi) {
+      for(std::size_t fi = bi * block; fi < (std::min)(nf, (bi + 1) * block); ++fi)
+      {
+        const Face f(static_cast<Face::size_type>(fi));
+        if(m_mesh.is_removed(f) || !query[fi])
+          continue;
+        const CGAL::Bbox_3& bf = m_boxes[fi];
+        for_each_cell(bf, [&](const Cell& c) {
+          const std::size_t k = bucket(c, buckets);
+          for(std::size_t e = m_start[k]; e < m_start[k + 1]; ++e)
+          {
+            const Entry& entry = m_listed[e];
+            const Face g = entry.face;
+            // A pair of two queried triangles once, from its smaller one.
+            if(g == f || (entry.query && g < f))
+              continue;
+            const CGAL::Bbox_3& bg = entry.box;
+            if(!CGAL::do_overlap(bf, bg))
+              continue;
+            const Cell low = cell_of((std::max)(bf.xmin(), bg.xmin()), (std::max)(bf.ymin(), bg.ymin()),
+                                     (std::max)(bf.zmin(), bg.zmin()));
+            if(low != c)
+              continue;
+            if(intersect(f, g))
+              found[bi].push_back(f < g ? Face_pair(f, g) : Face_pair(g, f));
+          }
+        });
+      }
+    });
+    for(const std::vector<Face_pair>& pairs : found)
+      out.insert(out.end(), pairs.begin(), pairs.end());
     // Two cells may share a bucket: a pair can be found twice.
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -128,6 +141,13 @@ public:
 
 private:
   using Cell = std::array<long long, 3>;
+
+  struct Entry
+  {
+    CGAL::Bbox_3 box;
+    Face face;
+    char query;
+  };
 
   Cell cell_of(double x, double y, double z) const
   {
@@ -216,7 +236,7 @@ private:
   double m_cell = 1;                  // the side of a grid cell
   std::vector<CGAL::Bbox_3> m_boxes;  // by face
   std::vector<std::size_t> m_start;   // by bucket: where its triangles start in m_listed
-  std::vector<Face> m_listed;
+  std::vector<Entry> m_listed;        // by bucket, the triangles listed in its cells
 };
 
 } // namespace Graphcut_remeshing

@@ -14,6 +14,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/intersections.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
@@ -70,7 +71,7 @@ public:
     : m_mesh(mesh), m_reference_mesh(mesh), m_reference(m_reference_mesh),
       m_reference_feature_edge(std::move(feature_edge)), m_reference_kind(std::move(kind)),
       m_polylines(m_reference_mesh, m_reference_feature_edge, m_reference_kind), m_options(options),
-      m_rng(options.random_seed)
+      m_round(0)
   {
     // The working mesh starts as the reference, index for index.
     m_state.feature_edge = m_reference_feature_edge;
@@ -122,28 +123,23 @@ public:
       if(kind_of(v) == Vertex_kind::feature_vertex)
         m_state.location[std::size_t(v)] = m_polylines.at_vertex(v);
     }
+    compute_terms();
   }
 
   Vertex_kind kind_of(Vertex v) const { return m_state.kind[std::size_t(v)]; }
 
   Vector_3d position(Vertex v) const { return to_vector(m_mesh.point(v)); }
 
-  // eq. (1)
+  // eq. (1), from the terms at the current positions.
   double energy() const
   {
     double u = 0;
     for(Face f : m_mesh.faces())
-    {
-      const std::array<Vertex, 3> t = face_vertices(f);
-      u += triangle_energy(f, position(t[0]), position(t[1]), position(t[2]));
-    }
+      u += m_face_term[std::size_t(f)];
     for(Vertex v : m_mesh.vertices())
-      u += data_energy(v, position(v));
-    for(std::size_t i = 0; i < m_feature_edges.size(); ++i)
-    {
-      const Halfedge h = m_mesh.halfedge(m_feature_edges[i]);
-      u += feature_edge_energy(i, position(m_mesh.source(h)), position(m_mesh.target(h)));
-    }
+      u += m_vertex_term[std::size_t(v)];
+    for(double t : m_edge_term)
+      u += t;
     return u;
   }
 
@@ -170,6 +166,7 @@ public:
            k % m_options.connectivity_period == 0)
         {
           connectivity_pass(stats);
+          compute_terms();
           stats.connectivity_passes.push_back(stats.number_of_iterations);
         }
         stats.energies.push_back(energy());
@@ -194,25 +191,35 @@ public:
   std::size_t relocate(double temperature, bool greedy)
   {
     update_tracking();
+    ++m_round;
 
-    // Candidates.
+    // Candidates, each vertex on its own with its own random numbers.
     const std::size_t n = m_mesh.num_vertices();
+    std::vector<char> proposed(n, 0);
+    std::vector<Vector_3d> proposal(n);
+    std::vector<Location> proposal_location(n);
+    std::vector<double> proposal_data(n, 0);
+    for_each_vertex([&](Vertex v) {
+      const std::size_t i = std::size_t(v);
+      CGAL::Random rng(item_seed(m_options.random_seed, m_round, i));
+      proposed[i] = propose(v, temperature, greedy, rng, proposal[i], proposal_location[i]);
+      if(proposed[i])
+        proposal_data[i] = data_energy(v, proposal[i]);
+    });
     std::vector<std::size_t> variable(n, Binary_graph_cut::none);
     std::vector<Vertex> moving;
     std::vector<Vector_3d> candidate;
     std::vector<Location> candidate_location;
+    std::vector<double> candidate_data;
     for(Vertex v : m_mesh.vertices())
-    {
-      Vector_3d c;
-      Location l;
-      if(propose(v, temperature, greedy, c, l))
+      if(proposed[std::size_t(v)])
       {
         variable[std::size_t(v)] = moving.size();
         moving.push_back(v);
-        candidate.push_back(c);
-        candidate_location.push_back(l);
+        candidate.push_back(proposal[std::size_t(v)]);
+        candidate_location.push_back(proposal_location[std::size_t(v)]);
+        candidate_data.push_back(proposal_data[std::size_t(v)]);
       }
-    }
     if(moving.empty())
       return 0;
 
@@ -222,7 +229,7 @@ public:
     std::vector<char> excluded(moving.size(), 0);
     for(;;)
     {
-      const std::vector<char> labels = decide(moving, candidate, variable, excluded);
+      const std::vector<char> labels = decide(moving, candidate, candidate_data, variable, excluded);
       std::vector<Vector_3d> previous(moving.size());
       std::size_t moved = 0;
       for(std::size_t i = 0; i < moving.size(); ++i)
@@ -254,6 +261,7 @@ public:
         for(std::size_t i = 0; i < moving.size(); ++i)
           if(labels[i] && kind_of(moving[i]) == Vertex_kind::feature_vertex)
             m_state.location[std::size_t(moving[i])] = candidate_location[i];
+        update_terms(touched);
         return moved;
       }
       for(std::size_t i = 0; i < moving.size(); ++i)
@@ -264,49 +272,62 @@ public:
   // The binary energy of the candidates: data terms as unaries, triangle terms over the triangles'
   // moving vertices; the excluded candidates cannot be taken.
   std::vector<char> decide(const std::vector<Vertex>& moving, const std::vector<Vector_3d>& candidate,
-                           const std::vector<std::size_t>& variable, const std::vector<char>& excluded) const
+                           const std::vector<double>& candidate_data, const std::vector<std::size_t>& variable,
+                           const std::vector<char>& excluded) const
   {
     // A configuration that would fold or flatten a triangle costs more than the whole current
     // energy, so the cut, which never does worse than keeping everything, never picks it.
     const double forbidden = 1e3 * (energy() + 1);
     Binary_graph_cut cut(moving.size());
     for(std::size_t i = 0; i < moving.size(); ++i)
-      cut.add_unary(i, data_energy(moving[i], position(moving[i])),
-                    excluded[i] ? forbidden : data_energy(moving[i], candidate[i]));
-    for(Face f : m_mesh.faces())
+      cut.add_unary(i, m_vertex_term[std::size_t(moving[i])], excluded[i] ? forbidden : candidate_data[i]);
+
+    // The tables of the triangles, each on its own, then into the cut in the order of the faces.
+    struct Triangle_table
     {
+      int k = 0; // number of moving vertices
+      std::array<std::size_t, 3> var{};
+      std::array<double, 8> table{};
+    };
+    std::vector<Triangle_table> tables(m_mesh.num_faces());
+    for_each_face([&](Face f) {
+      const std::size_t fi = std::size_t(f);
+      Triangle_table& t = tables[fi];
       const std::array<Vertex, 3> v = face_vertices(f);
-      std::array<std::size_t, 3> var{}, slot{};
-      int k = 0;
+      std::array<int, 3> slot{};
       for(int i = 0; i < 3; ++i)
         if(variable[std::size_t(v[i])] != Binary_graph_cut::none)
         {
-          var[k] = variable[std::size_t(v[i])];
-          slot[k] = i;
-          ++k;
+          t.var[t.k] = variable[std::size_t(v[i])];
+          slot[t.k] = i;
+          ++t.k;
         }
-      if(k == 0)
-        continue;
+      if(t.k == 0)
+        return;
       const std::array<Vector_3d, 3> current{{position(v[0]), position(v[1]), position(v[2])}};
       const Vector_3d current_normal = area_vector(current[0], current[1], current[2]);
-      std::array<double, 8> table{};
-      for(int mask = 0; mask < (1 << k); ++mask)
+      for(int mask = 0; mask < (1 << t.k); ++mask)
       {
         std::array<Vector_3d, 3> p = current;
-        for(int j = 0; j < k; ++j)
+        for(int j = 0; j < t.k; ++j)
           if((mask >> j) & 1)
-            p[slot[j]] = candidate[var[j]];
-        if(mask != 0 && !is_acceptable_triangle(p[0], p[1], p[2], current_normal))
-          table[mask] = forbidden;
+            p[slot[j]] = candidate[t.var[j]];
+        if(mask == 0)
+          t.table[mask] = m_face_term[fi];
+        else if(!is_acceptable_triangle(p[0], p[1], p[2], current_normal))
+          t.table[mask] = forbidden;
         else
-          table[mask] = triangle_energy(f, p[0], p[1], p[2]);
+          t.table[mask] = triangle_energy(f, p[0], p[1], p[2]);
       }
-      if(k == 1)
-        cut.add_unary(var[0], table[0], table[1]);
-      else if(k == 2)
-        cut.add_term(var[0], var[1], Binary_graph_cut::none, table);
-      else
-        cut.add_term(var[0], var[1], var[2], table);
+    });
+    for(const Triangle_table& t : tables)
+    {
+      if(t.k == 1)
+        cut.add_unary(t.var[0], t.table[0], t.table[1]);
+      else if(t.k == 2)
+        cut.add_term(t.var[0], t.var[1], Binary_graph_cut::none, t.table);
+      else if(t.k == 3)
+        cut.add_term(t.var[0], t.var[1], t.var[2], t.table);
     }
     for(std::size_t e = 0; e < m_feature_edges.size(); ++e)
     {
@@ -314,15 +335,16 @@ public:
       const std::array<Vertex, 2> v{{m_mesh.source(h), m_mesh.target(h)}};
       const std::size_t i = variable[std::size_t(v[0])], j = variable[std::size_t(v[1])];
       const Vector_3d a = position(v[0]), b = position(v[1]);
+      const double current = m_edge_term[e];
       if(i != Binary_graph_cut::none && j != Binary_graph_cut::none)
         cut.add_term(i, j, Binary_graph_cut::none,
-                     {{feature_edge_energy(e, a, b), feature_edge_energy(e, candidate[i], b),
+                     {{current, feature_edge_energy(e, candidate[i], b),
                        feature_edge_energy(e, a, candidate[j]), feature_edge_energy(e, candidate[i], candidate[j]),
                        0, 0, 0, 0}});
       else if(i != Binary_graph_cut::none)
-        cut.add_unary(i, feature_edge_energy(e, a, b), feature_edge_energy(e, candidate[i], b));
+        cut.add_unary(i, current, feature_edge_energy(e, candidate[i], b));
       else if(j != Binary_graph_cut::none)
-        cut.add_unary(j, feature_edge_energy(e, a, b), feature_edge_energy(e, a, candidate[j]));
+        cut.add_unary(j, current, feature_edge_energy(e, a, candidate[j]));
     }
     return cut.solve();
   }
@@ -456,8 +478,81 @@ private:
   // leaves a curved feature line; this term makes it pay for that.
   double feature_edge_energy(std::size_t i, const Vector_3d& a, const Vector_3d& b) const
   {
-    return m_options.weights.lambda_data *
+    return m_options.weights.feature_data_weight * m_options.weights.lambda_data *
            squared_distance((a + b) / 2, m_state.edge_hint[std::size_t(m_feature_edges[i])]);
+  }
+
+  // The terms of triangle f with its vertex v at x and the others where they are (in the order of
+  // the triangle's vertices, so that the value does not depend on the caller).
+  double triangle_energy(Face f, Vertex v, const Vector_3d& x) const
+  {
+    const std::array<Vertex, 3> t = face_vertices(f);
+    std::array<Vector_3d, 3> p;
+    for(int i = 0; i < 3; ++i)
+      p[i] = t[i] == v ? x : position(t[i]);
+    return triangle_energy(f, p[0], p[1], p[2]);
+  }
+
+  // eq. (7) at the current position of v, from the terms kept: local_evidence(v, position(v)).
+  double current_local_evidence(Vertex v) const
+  {
+    double u = m_vertex_term[std::size_t(v)];
+    for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      if(!m_mesh.is_border(h))
+        u += m_face_term[std::size_t(m_mesh.face(h))];
+    if(kind_of(v) == Vertex_kind::feature_vertex)
+      for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      {
+        const std::size_t i = m_feature_edge_slot[std::size_t(m_mesh.edge(h))];
+        if(i != Binary_graph_cut::none)
+          u += m_edge_term[i];
+      }
+    return u;
+  }
+
+  // The terms of eq. (1) at the current positions: all of them (after the mesh changed), or those
+  // that depend on a vertex with moved[v] set. The tracking hints only ever move to where the
+  // closest-point descent from the previous hint ends, so the terms stay exact when they change.
+  void compute_terms()
+  {
+    m_face_term.assign(m_mesh.num_faces(), 0);
+    m_vertex_term.assign(m_mesh.num_vertices(), 0);
+    m_edge_term.assign(m_feature_edges.size(), 0);
+    for_each_face([&](Face f) { m_face_term[std::size_t(f)] = current_triangle_energy(f); });
+    for_each_vertex([&](Vertex v) { m_vertex_term[std::size_t(v)] = data_energy(v, position(v)); });
+    for(std::size_t i = 0; i < m_feature_edges.size(); ++i)
+      m_edge_term[i] = current_feature_edge_energy(i);
+  }
+
+  void update_terms(const std::vector<char>& moved)
+  {
+    for_each_face([&](Face f) {
+      const std::array<Vertex, 3> t = face_vertices(f);
+      if(moved[std::size_t(t[0])] || moved[std::size_t(t[1])] || moved[std::size_t(t[2])])
+        m_face_term[std::size_t(f)] = current_triangle_energy(f);
+    });
+    for_each_vertex([&](Vertex v) {
+      if(moved[std::size_t(v)])
+        m_vertex_term[std::size_t(v)] = data_energy(v, position(v));
+    });
+    for(std::size_t i = 0; i < m_feature_edges.size(); ++i)
+    {
+      const Halfedge h = m_mesh.halfedge(m_feature_edges[i]);
+      if(moved[std::size_t(m_mesh.source(h))] || moved[std::size_t(m_mesh.target(h))])
+        m_edge_term[i] = current_feature_edge_energy(i);
+    }
+  }
+
+  double current_triangle_energy(Face f) const
+  {
+    const std::array<Vertex, 3> t = face_vertices(f);
+    return triangle_energy(f, position(t[0]), position(t[1]), position(t[2]));
+  }
+
+  double current_feature_edge_energy(std::size_t i) const
+  {
+    const Halfedge h = m_mesh.halfedge(m_feature_edges[i]);
+    return feature_edge_energy(i, position(m_mesh.source(h)), position(m_mesh.target(h)));
   }
 
   // eq. (7): the energy terms that depend on the position x of vertex v. The terms are not
@@ -472,8 +567,7 @@ private:
       {
         if(!(u < bound))
           return u;
-        u += triangle_energy(m_mesh.face(h), x, position(m_mesh.target(m_mesh.next(h))),
-                             position(m_mesh.source(h)));
+        u += triangle_energy(m_mesh.face(h), v, x);
       }
     if(kind_of(v) == Vertex_kind::feature_vertex)
       for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
@@ -490,8 +584,8 @@ private:
   // any term at the current positions).
   void update_tracking()
   {
-    for(Vertex v : m_mesh.vertices())
-    {
+    std::array<double, 3> w;
+    for_each_vertex([&](Vertex v) {
       if(kind_of(v) == Vertex_kind::feature_vertex)
       {
         // On its polyline: the reference elements come with its place there.
@@ -501,28 +595,51 @@ private:
         m_state.vertex_hint[std::size_t(v)] = m_reference_mesh.face(h);
       }
       if(kind_of(v) != Vertex_kind::free_vertex)
-        continue;
+        return;
       const Vector_3d x = position(v);
       m_state.closest[std::size_t(v)] = m_reference.closest_vertex(x, m_state.closest[std::size_t(v)]);
-      m_reference.frame_at_closest_point(x, m_state.vertex_hint[std::size_t(v)]);
-    }
-    for(Face f : m_mesh.faces())
-    {
+      std::array<double, 3> w;
+      m_reference.closest_point(x, m_state.vertex_hint[std::size_t(v)], w);
+    });
+    for_each_face([&](Face f) {
       const std::array<Vertex, 3> t = face_vertices(f);
-      m_reference.frame_at_closest_point((position(t[0]) + position(t[1]) + position(t[2])) / 3,
-                                         m_state.face_hint[std::size_t(f)]);
-    }
+      std::array<double, 3> w;
+      m_reference.closest_point((position(t[0]) + position(t[1]) + position(t[2])) / 3,
+                                m_state.face_hint[std::size_t(f)], w);
+    });
     for(std::size_t i = 0; i < m_feature_edges.size(); ++i)
     {
       const Halfedge h = m_mesh.halfedge(m_feature_edges[i]);
-      m_reference.frame_at_closest_point((position(m_mesh.source(h)) + position(m_mesh.target(h))) / 2,
-                                         m_state.edge_hint[std::size_t(m_feature_edges[i])]);
+      m_reference.closest_point((position(m_mesh.source(h)) + position(m_mesh.target(h))) / 2,
+                                m_state.edge_hint[std::size_t(m_feature_edges[i])], w);
     }
+  }
+
+  // function(v) for every vertex, function(f) for every face, as independent items.
+  template <typename Function>
+  void for_each_vertex(const Function& function) const
+  {
+    for_each_index(m_mesh.num_vertices(), [&](std::size_t i) {
+      const Vertex v(static_cast<Vertex::size_type>(i));
+      if(!m_mesh.is_removed(v))
+        function(v);
+    });
+  }
+
+  template <typename Function>
+  void for_each_face(const Function& function) const
+  {
+    for_each_index(m_mesh.num_faces(), [&](std::size_t i) {
+      const Face f(static_cast<Face::size_type>(i));
+      if(!m_mesh.is_removed(f))
+        function(f);
+    });
   }
 
   // Section 2.3: the first candidate, in the order of the paper, that lies in the freedom sphere
   // and lowers the local evidence. False when there is none.
-  bool propose(Vertex v, double temperature, bool greedy, Vector_3d& out, Location& out_location)
+  bool propose(Vertex v, double temperature, bool greedy, CGAL::Random& rng, Vector_3d& out,
+               Location& out_location) const
   {
     if(kind_of(v) == Vertex_kind::fixed_vertex)
       return false;
@@ -535,10 +652,10 @@ private:
       if(!m_mesh.is_border(h))
         link.emplace_back(position(m_mesh.target(m_mesh.next(h))), position(m_mesh.source(h)));
     }
-    const double before = local_evidence(v, x);
+    const double before = current_local_evidence(v);
 
     if(kind_of(v) == Vertex_kind::feature_vertex)
-      return propose_on_feature(v, x, link, before, temperature, greedy, out, out_location);
+      return propose_on_feature(v, x, link, before, temperature, greedy, rng, out, out_location);
 
     const Local_frame& frame = m_reference.frame(m_state.closest[std::size_t(v)]);
     const double sigma = freedom_radius(temperature, ring_radius(x, link), frame.min_radius());
@@ -568,8 +685,8 @@ private:
       // Guided random: a random direction of the tangent plane, a random length in the sphere.
       for(int attempt = 0; attempt < 3; ++attempt)
       {
-        const double angle = m_rng.get_double(0, 2 * pi);
-        const double length = sigma * m_rng.get_double(0.1, 1.0);
+        const double angle = rng.get_double(0, 2 * pi);
+        const double length = sigma * rng.get_double(0.1, 1.0);
         if(accept(on_surface(x + length * (std::cos(angle) * frame.d1 + std::sin(angle) * frame.d2))))
           return true;
       }
@@ -589,15 +706,15 @@ private:
       return false;
     const Vector_3d descent = -gradient.normalized();
     for(int attempt = 0; attempt < 3; ++attempt)
-      if(accept(on_surface(x + sigma * m_rng.get_double(0.05, 1.0) * descent)))
+      if(accept(on_surface(x + sigma * rng.get_double(0.05, 1.0) * descent)))
         return true;
     return false;
   }
 
   // Vertices on a feature slide along their reference polyline: the 1D Laplacian towards the
   // middle of their two feature neighbours, or a random (greedy: downhill) slide.
-  bool propose_on_feature(Vertex v, const Vector_3d& x, const Link& link, double before,
-                          double temperature, bool greedy, Vector_3d& out, Location& out_location)
+  bool propose_on_feature(Vertex v, const Vector_3d& x, const Link& link, double before, double temperature,
+                          bool greedy, CGAL::Random& rng, Vector_3d& out, Location& out_location) const
   {
     const Location here = m_state.location[std::size_t(v)];
     // The polyline is followed exactly, so its curvature does not limit the sphere.
@@ -629,8 +746,8 @@ private:
         return true;
       for(int attempt = 0; attempt < 3; ++attempt)
       {
-        const double sign = m_rng.get_bool() ? 1. : -1.;
-        if(accept(sign * sigma * m_rng.get_double(0.1, 1.0) * tangent))
+        const double sign = rng.get_bool() ? 1. : -1.;
+        if(accept(sign * sigma * rng.get_double(0.1, 1.0) * tangent))
           return true;
       }
       return false;
@@ -643,7 +760,7 @@ private:
       return false;
     const Vector_3d descent = forward < backward ? tangent : Vector_3d(-tangent);
     for(int attempt = 0; attempt < 3; ++attempt)
-      if(accept(sigma * m_rng.get_double(0.05, 1.0) * descent))
+      if(accept(sigma * rng.get_double(0.05, 1.0) * descent))
         return true;
     return false;
   }
@@ -655,13 +772,16 @@ private:
   const std::vector<Vertex_kind> m_reference_kind;    // by reference vertex
   Polylines m_polylines;
   Remeshing_options m_options;
-  CGAL::Random m_rng;
+  std::size_t m_round; // relocations so far: with the vertex, it seeds the vertex's random numbers
   Tracking_state m_state;            // kinds, y_s0 (its frame gives the tangent plane and rho), hints
   Sizing m_sizing;
   std::vector<char> m_intersection_frozen; // by vertex: on a face the input made intersect
   std::vector<Box> m_keep_out;             // regions where connectivity changes made intersections
   std::vector<Edge> m_feature_edges; // the feature edges of the working mesh
   std::vector<std::size_t> m_feature_edge_slot; // by edge index: position in m_feature_edges
+  std::vector<double> m_face_term;   // by face: its terms of eq. (1) at the current positions
+  std::vector<double> m_vertex_term; // by vertex: its data term at its current position
+  std::vector<double> m_edge_term;   // by feature-edge slot: its term at the current positions
   std::vector<std::pair<Face, Face> > m_input_intersections; // sorted
 };
 
