@@ -84,20 +84,18 @@ public:
     for(Face f : m_mesh.faces())
       entries += number_of_cells(m_boxes[std::size_t(f)]);
     std::size_t buckets = 1;
-    while(buckets < 2 * entries)
+    while(buckets < entries)
       buckets *= 2;
     m_start.assign(buckets + 1, 0);
     for(Face f : m_mesh.faces())
       for_each_cell(m_boxes[std::size_t(f)], [&](const Cell& c) { ++m_start[bucket(c, buckets) + 1]; });
     for(std::size_t i = 0; i < buckets; ++i)
       m_start[i + 1] += m_start[i];
-    // Each entry carries what the scans read, so that a bucket is read in one sweep.
     m_listed.resize(entries);
     std::vector<std::size_t> fill(m_start.begin(), m_start.end() - 1);
     for(Face f : m_mesh.faces())
-      for_each_cell(m_boxes[std::size_t(f)], [&](const Cell& c) {
-        m_listed[fill[bucket(c, buckets)]++] = Entry{m_boxes[std::size_t(f)], f, query[std::size_t(f)]};
-      });
+      for_each_cell(m_boxes[std::size_t(f)], [&](const Cell& c) { m_listed[fill[bucket(c, buckets)]++] = f; });
+    fill = std::vector<std::size_t>();
 
     // The queries by blocks of triangles, each block into its own list.
     const std::size_t block = 1024, number_of_blocks = (nf + block - 1) / block;
@@ -113,12 +111,11 @@ public:
           const std::size_t k = bucket(c, buckets);
           for(std::size_t e = m_start[k]; e < m_start[k + 1]; ++e)
           {
-            const Entry& entry = m_listed[e];
-            const Face g = entry.face;
+            const Face g = m_listed[e];
             // A pair of two queried triangles once, from its smaller one.
-            if(g == f || (entry.query && g < f))
+            if(g == f || (query[std::size_t(g)] && g < f))
               continue;
-            const CGAL::Bbox_3& bg = entry.box;
+            const CGAL::Bbox_3& bg = m_boxes[std::size_t(g)];
             if(!CGAL::do_overlap(bf, bg))
               continue;
             const Cell low = cell_of((std::max)(bf.xmin(), bg.xmin()), (std::max)(bf.ymin(), bg.ymin()),
@@ -141,13 +138,6 @@ public:
 
 private:
   using Cell = std::array<long long, 3>;
-
-  struct Entry
-  {
-    CGAL::Bbox_3 box;
-    Face face;
-    char query;
-  };
 
   Cell cell_of(double x, double y, double z) const
   {
@@ -236,7 +226,7 @@ private:
   double m_cell = 1;                  // the side of a grid cell
   std::vector<CGAL::Bbox_3> m_boxes;  // by face
   std::vector<std::size_t> m_start;   // by bucket: where its triangles start in m_listed
-  std::vector<Entry> m_listed;        // by bucket, the triangles listed in its cells
+  std::vector<Face> m_listed;         // by bucket, the triangles listed in its cells
 };
 
 } // namespace Graphcut_remeshing

@@ -269,6 +269,46 @@ public:
     }
   }
 
+  // The variables of the moving vertices of a triangle and its energy for each choice of theirs:
+  // bit j of the index of `table` says whether the j-th moving vertex takes its candidate.
+  struct Triangle_table
+  {
+    int k = 0; // number of moving vertices
+    std::array<std::size_t, 3> var{};
+    std::array<double, 8> table{};
+  };
+
+  void fill_triangle_table(Face f, const std::vector<Vector_3d>& candidate, const std::vector<std::size_t>& variable,
+                           double forbidden, Triangle_table& t) const
+  {
+    const std::array<Vertex, 3> v = face_vertices(f);
+    std::array<int, 3> slot{};
+    for(int i = 0; i < 3; ++i)
+      if(variable[std::size_t(v[i])] != Binary_graph_cut::none)
+      {
+        t.var[t.k] = variable[std::size_t(v[i])];
+        slot[t.k] = i;
+        ++t.k;
+      }
+    if(t.k == 0)
+      return;
+    const std::array<Vector_3d, 3> current{{position(v[0]), position(v[1]), position(v[2])}};
+    const Vector_3d current_normal = area_vector(current[0], current[1], current[2]);
+    for(int mask = 0; mask < (1 << t.k); ++mask)
+    {
+      std::array<Vector_3d, 3> p = current;
+      for(int j = 0; j < t.k; ++j)
+        if((mask >> j) & 1)
+          p[slot[j]] = candidate[t.var[j]];
+      if(mask == 0)
+        t.table[mask] = m_face_term[std::size_t(f)];
+      else if(!is_acceptable_triangle(p[0], p[1], p[2], current_normal))
+        t.table[mask] = forbidden;
+      else
+        t.table[mask] = triangle_energy(f, p[0], p[1], p[2]);
+    }
+  }
+
   // The binary energy of the candidates: data terms as unaries, triangle terms over the triangles'
   // moving vertices; the excluded candidates cannot be taken.
   std::vector<char> decide(const std::vector<Vertex>& moving, const std::vector<Vector_3d>& candidate,
@@ -282,53 +322,29 @@ public:
     for(std::size_t i = 0; i < moving.size(); ++i)
       cut.add_unary(i, m_vertex_term[std::size_t(moving[i])], excluded[i] ? forbidden : candidate_data[i]);
 
-    // The tables of the triangles, each on its own, then into the cut in the order of the faces.
-    struct Triangle_table
+    // The tables of the triangles, each on its own, then into the cut in the order of the faces;
+    // by blocks, so that the tables of a large mesh are never all in memory.
+    const std::size_t block = 1 << 15;
+    std::vector<Triangle_table> tables;
+    for(std::size_t first = 0; first < m_mesh.num_faces(); first += block)
     {
-      int k = 0; // number of moving vertices
-      std::array<std::size_t, 3> var{};
-      std::array<double, 8> table{};
-    };
-    std::vector<Triangle_table> tables(m_mesh.num_faces());
-    for_each_face([&](Face f) {
-      const std::size_t fi = std::size_t(f);
-      Triangle_table& t = tables[fi];
-      const std::array<Vertex, 3> v = face_vertices(f);
-      std::array<int, 3> slot{};
-      for(int i = 0; i < 3; ++i)
-        if(variable[std::size_t(v[i])] != Binary_graph_cut::none)
-        {
-          t.var[t.k] = variable[std::size_t(v[i])];
-          slot[t.k] = i;
-          ++t.k;
-        }
-      if(t.k == 0)
-        return;
-      const std::array<Vector_3d, 3> current{{position(v[0]), position(v[1]), position(v[2])}};
-      const Vector_3d current_normal = area_vector(current[0], current[1], current[2]);
-      for(int mask = 0; mask < (1 << t.k); ++mask)
+      tables.assign((std::min)(block, m_mesh.num_faces() - first), Triangle_table());
+      for_each_index(tables.size(), [&](std::size_t i) {
+        const Face f(static_cast<Face::size_type>(first + i));
+        if(!m_mesh.is_removed(f))
+          fill_triangle_table(f, candidate, variable, forbidden, tables[i]);
+      });
+      for(const Triangle_table& t : tables)
       {
-        std::array<Vector_3d, 3> p = current;
-        for(int j = 0; j < t.k; ++j)
-          if((mask >> j) & 1)
-            p[slot[j]] = candidate[t.var[j]];
-        if(mask == 0)
-          t.table[mask] = m_face_term[fi];
-        else if(!is_acceptable_triangle(p[0], p[1], p[2], current_normal))
-          t.table[mask] = forbidden;
-        else
-          t.table[mask] = triangle_energy(f, p[0], p[1], p[2]);
+        if(t.k == 1)
+          cut.add_unary(t.var[0], t.table[0], t.table[1]);
+        else if(t.k == 2)
+          cut.add_term(t.var[0], t.var[1], Binary_graph_cut::none, t.table);
+        else if(t.k == 3)
+          cut.add_term(t.var[0], t.var[1], t.var[2], t.table);
       }
-    });
-    for(const Triangle_table& t : tables)
-    {
-      if(t.k == 1)
-        cut.add_unary(t.var[0], t.table[0], t.table[1]);
-      else if(t.k == 2)
-        cut.add_term(t.var[0], t.var[1], Binary_graph_cut::none, t.table);
-      else if(t.k == 3)
-        cut.add_term(t.var[0], t.var[1], t.var[2], t.table);
     }
+    tables = std::vector<Triangle_table>();
     for(std::size_t e = 0; e < m_feature_edges.size(); ++e)
     {
       const Halfedge h = m_mesh.halfedge(m_feature_edges[e]);
