@@ -635,20 +635,23 @@ private:
   template <typename Function>
   void for_each_vertex(const Function& function) const
   {
-    for_each_index(m_mesh.num_vertices(), [&](std::size_t i) {
-      const Vertex v(static_cast<Vertex::size_type>(i));
-      if(!m_mesh.is_removed(v))
-        function(v);
-    });
+    for_each_element<Vertex>(m_mesh.num_vertices(), function);
   }
 
   template <typename Function>
   void for_each_face(const Function& function) const
   {
-    for_each_index(m_mesh.num_faces(), [&](std::size_t i) {
-      const Face f(static_cast<Face::size_type>(i));
-      if(!m_mesh.is_removed(f))
-        function(f);
+    for_each_element<Face>(m_mesh.num_faces(), function);
+  }
+
+  // The n index slots of one kind, the removed ones left out.
+  template <typename Index, typename Function>
+  void for_each_element(std::size_t n, const Function& function) const
+  {
+    for_each_index(n, [&](std::size_t i) {
+      const Index x(static_cast<typename Index::size_type>(i));
+      if(!m_mesh.is_removed(x))
+        function(x);
     });
   }
 
