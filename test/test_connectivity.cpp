@@ -10,6 +10,7 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/graphcut_isotropic_remeshing.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/connectivity.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/intersections.h>
 #include <CGAL/Polygon_mesh_processing/mesh_quality_report.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -714,4 +715,150 @@ TEST(GraphcutRemeshing, ConstrainedMapsAreUpdatedWhenTheConnectivityChanges)
       EXPECT_EQ(pinned.count(key(v)), 1u) << "a constrained vertex moved";
     }
   EXPECT_EQ(pinned_after, pinned.size());
+}
+
+// The self-intersection check of the relocation (internal/Graphcut_remeshing/intersections.h)
+// against CGAL's self_intersections, on whole meshes and after moves of a few vertices at a time.
+namespace {
+
+using Face_pair = GR::Triangle_intersections::Face_pair;
+
+// CGAL's answer on an exact-predicates copy of w, index for index.
+std::vector<Face_pair> cgal_self_intersections(const Work& w)
+{
+  Mesh m;
+  for(auto v : w.vertices())
+    m.add_vertex(Point(w.point(v).x(), w.point(v).y(), w.point(v).z()));
+  for(auto f : w.faces())
+  {
+    const auto t = GR::face_vertices(w, f);
+    m.add_face(Mesh::Vertex_index(std::size_t(t[0])), Mesh::Vertex_index(std::size_t(t[1])),
+               Mesh::Vertex_index(std::size_t(t[2])));
+  }
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > found;
+  PMP::self_intersections(m, std::back_inserter(found));
+  std::vector<Face_pair> pairs;
+  for(const auto& p : found)
+  {
+    const Work::Face_index f(std::size_t(p.first)), g(std::size_t(p.second));
+    pairs.push_back(f < g ? Face_pair(f, g) : Face_pair(g, f));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+// Two spheres that overlap, in one mesh: pairs that share no vertex.
+Mesh overlapping_spheres()
+{
+  Mesh m = make_sphere(3, 1.0);
+  Mesh other = make_sphere(3, 0.8, Point(1.1, 0.2, 0.1));
+  CGAL::copy_face_graph(other, m);
+  return m;
+}
+
+// A flat fan of n triangles around the origin, the k-th rim vertex at angle k * 60 degrees: with
+// `closed`, n = 12 goes twice around; open, n = 7 goes past a full turn. Each triangle alone is
+// positively oriented; the turns overlap.
+Mesh winding_fan(std::size_t n, bool closed)
+{
+  std::vector<Point> points{Point(0, 0, 0)};
+  const std::size_t rim = closed ? n : n + 1;
+  for(std::size_t k = 0; k < rim; ++k)
+  {
+    const double a = double(k) * pi / 3, r = 1 + 0.1 * double(k);
+    points.emplace_back(r * std::cos(a), r * std::sin(a), 0);
+  }
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(std::size_t k = 0; k < n; ++k)
+    triangles.push_back({{0, 1 + k, 1 + (k + 1) % rim}});
+  return mesh_from_soup(points, triangles);
+}
+
+// A flat grid: every fan is exactly coplanar, so folds overlap in the plane.
+Mesh flat_grid() { return make_grid(12, 9, [](std::size_t i, std::size_t j) { return Point(0.1 * i, 0.1 * j, 0); }); }
+
+double mean_edge_length(const Work& w)
+{
+  double total = 0;
+  for(auto e : w.edges())
+    total += std::sqrt(CGAL::squared_distance(w.point(w.source(w.halfedge(e))), w.point(w.target(w.halfedge(e)))));
+  return total / double(w.number_of_edges());
+}
+
+} // namespace
+
+TEST(Triangle_intersections, AllPairsAsCgalFindsThem)
+{
+  const std::vector<std::pair<std::string, Mesh> > meshes = {
+    {"sphere", make_sphere(3)},
+    {"jittered sphere", noisy_sphere(3, 0.25, 0.08, 7)},
+    {"overlapping spheres", overlapping_spheres()},
+    {"flat grid", flat_grid()},
+    {"torus", make_torus(24, 12, 1.0, 0.3)},
+    {"fandisk", load_sample_mesh("fandisk")},
+    {"fan going twice around", winding_fan(12, true)},
+    {"open fan past a full turn", winding_fan(7, false)}};
+  std::size_t intersecting_meshes = 0;
+  for(const auto& named : meshes)
+  {
+    SCOPED_TRACE(named.first);
+    Work w = to_work(named.second);
+    const std::vector<Face_pair> expected = cgal_self_intersections(w);
+    EXPECT_EQ(GR::Triangle_intersections(w).all_pairs(), expected);
+    intersecting_meshes += expected.empty() ? 0 : 1;
+  }
+  // The jittered sphere, the overlapping spheres and the two fans.
+  EXPECT_EQ(intersecting_meshes, 4u);
+}
+
+TEST(Triangle_intersections, AfterMovesOfAFewVerticesAsCgalFindsThem)
+{
+  // Moves small and large (beyond the margin of the candidate list), in space and, on the flat
+  // grid, in the plane only; half of them undone, as the relocation does when its cut made
+  // intersections.
+  const std::vector<std::pair<std::string, Mesh> > meshes = {
+    {"sphere", make_sphere(3)}, {"flat grid", flat_grid()}, {"overlapping spheres", overlapping_spheres()}};
+  std::size_t found_some = 0;
+  for(const auto& named : meshes)
+  {
+    SCOPED_TRACE(named.first);
+    Work w = to_work(named.second);
+    const bool planar = named.first == "flat grid";
+    const double h = mean_edge_length(w);
+    GR::Triangle_intersections intersections(w);
+    intersections.all_pairs();
+    CGAL::Random rng(11);
+    for(int round = 0; round < 40; ++round)
+    {
+      SCOPED_TRACE(round);
+      const double step = h * std::vector<double>{0.02, 0.2, 0.8}[std::size_t(round % 3)];
+      std::vector<char> touched(w.num_vertices(), 0);
+      std::vector<std::pair<Work::Vertex_index, GR::Work_kernel::Point_3> > before;
+      for(auto v : w.vertices())
+        if(rng.get_double() < 0.05)
+        {
+          touched[std::size_t(v)] = 1;
+          before.emplace_back(v, w.point(v));
+          const auto& p = w.point(v);
+          w.point(v) = GR::Work_kernel::Point_3(p.x() + step * rng.get_double(-1, 1), p.y() + step * rng.get_double(-1, 1),
+                                                planar ? p.z() : p.z() + step * rng.get_double(-1, 1));
+        }
+      std::vector<Face_pair> expected;
+      for(const Face_pair& p : cgal_self_intersections(w))
+      {
+        bool incident = false;
+        for(auto f : {p.first, p.second})
+          for(auto v : GR::face_vertices(w, f))
+            incident = incident || touched[std::size_t(v)];
+        if(incident)
+          expected.push_back(p);
+      }
+      EXPECT_EQ(intersections.pairs_touching(touched), expected);
+      found_some += expected.empty() ? 0 : 1;
+      if(round % 2 == 1)
+        for(const auto& b : before)
+          w.point(b.first) = b.second;
+    }
+  }
+  EXPECT_GT(found_some, 20u);
 }

@@ -3,7 +3,14 @@
 //
 // Which triangles of the working mesh intersect: among all of them, or only those incident to a
 // set of vertices (after a relocation only the triangles of the moved vertices can have started
-// to intersect anything). A grid of boxes finds the candidate pairs; exact predicates decide.
+// to intersect anything). Exact predicates decide.
+//
+// Triangles that share a vertex are checked one vertex fan at a time: a fan that, seen along a
+// coordinate axis, is a ring of positively oriented sectors going once around its vertex cannot
+// meet itself. Triangles that share no vertex are checked in pairs from a candidate list: the
+// pairs whose boxes, grown by a margin, overlap. The list stays valid until a vertex drifts
+// farther than the margin from where it was when the list was made, so the relocations of
+// several iterations share one list.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_INTERSECTIONS_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_INTERSECTIONS_H
@@ -14,6 +21,8 @@
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
+
+#include <boost/container/small_vector.hpp>
 
 #include <algorithm>
 #include <array>
@@ -31,6 +40,7 @@ namespace Graphcut_remeshing {
 class Triangle_intersections
 {
   using Vertex = Work_mesh::Vertex_index;
+  using Halfedge = Work_mesh::Halfedge_index;
   using Face = Work_mesh::Face_index;
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Point = Epick::Point_3;
@@ -40,97 +50,59 @@ public:
 
   explicit Triangle_intersections(const Work_mesh& m) : m_mesh(m) {}
 
+  // To be called when the connectivity of the mesh changed: the candidate list is made again.
+  void invalidate() { m_valid = false; }
+
   // All intersecting pairs, sorted.
   std::vector<Face_pair> all_pairs()
   {
+    m_valid = false;
     return pairs_touching(std::vector<char>(m_mesh.num_vertices(), 1));
   }
 
   // The intersecting pairs with at least one triangle incident to a vertex v with touched[v],
-  // sorted.
-  //
-  // Candidates come from a hashed uniform grid of the triangles' boxes: each triangle is listed in
-  // every cell its box overlaps, and a pair of overlapping boxes is tested in the one cell holding
-  // the low corner of their intersection. Building the grid and each query are linear in the
-  // number of triangles, where a sweep over sorted boxes is not.
+  // sorted: all those that may have started to intersect when only the touched vertices moved
+  // since the mesh was last known to be without new intersections.
   std::vector<Face_pair> pairs_touching(const std::vector<char>& touched)
   {
+    // Any vertex, not only the touched ones: a caller may have put others back where they were.
+    if(m_valid)
+      for(Vertex v : m_mesh.vertices())
+        if(drifted(v))
+        {
+          m_valid = false;
+          break;
+        }
+    if(!m_valid)
+      make_candidates();
+
     const std::size_t nf = m_mesh.num_faces();
-    m_boxes.assign(nf, CGAL::Bbox_3());
     std::vector<char> query(nf, 0);
-    double extent = 0;
-    std::size_t count = 0;
     for(Face f : m_mesh.faces())
-    {
-      CGAL::Bbox_3& b = m_boxes[std::size_t(f)];
-      for(Vertex v : face_vertices(m_mesh, f))
-      {
-        b += m_mesh.point(v).bbox();
+      for(Vertex v : m_triangles[std::size_t(f)])
         query[std::size_t(f)] |= touched[std::size_t(v)];
-      }
-      extent += (std::max)({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
-      ++count;
-    }
+
     std::vector<Face_pair> out;
-    if(count == 0)
-      return out;
-    // About the size of a triangle: a cell then holds a few triangles, a triangle a few cells.
-    m_cell = 1.5 * extent / double(count);
-    if(!(m_cell > 0))
-      m_cell = 1;
-
-    // Counting sort of (cell, triangle) entries by the hash of the cell.
-    std::size_t entries = 0;
+    // Triangles that share a vertex: the fans of the vertices of the queried triangles.
+    const std::size_t nv = m_mesh.num_vertices();
+    std::vector<char> fan(nv, 0);
     for(Face f : m_mesh.faces())
-      entries += number_of_cells(m_boxes[std::size_t(f)]);
-    std::size_t buckets = 1;
-    while(buckets < entries)
-      buckets *= 2;
-    m_start.assign(buckets + 1, 0);
-    for(Face f : m_mesh.faces())
-      for_each_cell(m_boxes[std::size_t(f)], [&](const Cell& c) { ++m_start[bucket(c, buckets) + 1]; });
-    for(std::size_t i = 0; i < buckets; ++i)
-      m_start[i + 1] += m_start[i];
-    m_listed.resize(entries);
-    std::vector<std::size_t> fill(m_start.begin(), m_start.end() - 1);
-    for(Face f : m_mesh.faces())
-      for_each_cell(m_boxes[std::size_t(f)], [&](const Cell& c) { m_listed[fill[bucket(c, buckets)]++] = f; });
-    fill = std::vector<std::size_t>();
-
-    // The queries by blocks of triangles, each block into its own list.
-    const std::size_t block = 1024, number_of_blocks = (nf + block - 1) / block;
-    std::vector<std::vector<Face_pair> > found(number_of_blocks);
-    for_each_index(number_of_blocks, [&](std::size_t bi) {
-      for(std::size_t fi = bi * block; fi < (std::min)(nf, (bi + 1) * block); ++fi)
-      {
-        const Face f(static_cast<Face::size_type>(fi));
-        if(m_mesh.is_removed(f) || !query[fi])
-          continue;
-        const CGAL::Bbox_3& bf = m_boxes[fi];
-        for_each_cell(bf, [&](const Cell& c) {
-          const std::size_t k = bucket(c, buckets);
-          for(std::size_t e = m_start[k]; e < m_start[k + 1]; ++e)
-          {
-            const Face g = m_listed[e];
-            // A pair of two queried triangles once, from its smaller one.
-            if(g == f || (query[std::size_t(g)] && g < f))
-              continue;
-            const CGAL::Bbox_3& bg = m_boxes[std::size_t(g)];
-            if(!CGAL::do_overlap(bf, bg))
-              continue;
-            const Cell low = cell_of((std::max)(bf.xmin(), bg.xmin()), (std::max)(bf.ymin(), bg.ymin()),
-                                     (std::max)(bf.zmin(), bg.zmin()));
-            if(low != c)
-              continue;
-            if(intersect(f, g))
-              found[bi].push_back(f < g ? Face_pair(f, g) : Face_pair(g, f));
-          }
-        });
-      }
+      if(query[std::size_t(f)])
+        for(Vertex v : m_triangles[std::size_t(f)])
+          fan[std::size_t(v)] = 1;
+    collect_by_blocks(nv, out, [&](std::size_t i, std::vector<Face_pair>& found) {
+      const Vertex v(static_cast<Vertex::size_type>(i));
+      if(fan[i] && !m_mesh.is_removed(v))
+        fan_pairs(v, query, found);
     });
-    for(const std::vector<Face_pair>& pairs : found)
-      out.insert(out.end(), pairs.begin(), pairs.end());
-    // Two cells may share a bucket: a pair can be found twice.
+    // Triangles that share no vertex: the candidates with a queried triangle.
+    collect_by_blocks(m_candidates.size(), out, [&](std::size_t i, std::vector<Face_pair>& found) {
+      const Face_pair& p = m_candidates[i];
+      if((query[std::size_t(p.first)] || query[std::size_t(p.second)]) &&
+         CGAL::do_overlap(box(p.first), box(p.second)) && intersect(p.first, p.second))
+        found.push_back(p);
+    });
+    // A pair with two common vertices comes from both fans.
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
@@ -138,6 +110,141 @@ public:
 
 private:
   using Cell = std::array<long long, 3>;
+
+  Point point(Vertex v) const
+  {
+    const auto& p = m_mesh.point(v);
+    return Point(p.x(), p.y(), p.z());
+  }
+
+  CGAL::Bbox_3 box(Face f) const
+  {
+    CGAL::Bbox_3 b;
+    for(Vertex v : m_triangles[std::size_t(f)])
+      b += m_mesh.point(v).bbox();
+    return b;
+  }
+
+  bool drifted(Vertex v) const
+  {
+    const auto& p = m_mesh.point(v);
+    const std::array<double, 3>& a = m_anchor[std::size_t(v)];
+    return !(std::abs(p.x() - a[0]) <= m_margin && std::abs(p.y() - a[1]) <= m_margin &&
+             std::abs(p.z() - a[2]) <= m_margin);
+  }
+
+  // function(i, list) for i in [0, n), by blocks in parallel, each block into its own list; then
+  // the lists appended to `out` in the order of the blocks.
+  template <typename Function>
+  static void collect_by_blocks(std::size_t n, std::vector<Face_pair>& out, const Function& function)
+  {
+    const std::size_t block = 4096, number_of_blocks = (n + block - 1) / block;
+    std::vector<std::vector<Face_pair> > found(number_of_blocks);
+    for_each_index(number_of_blocks, [&](std::size_t bi) {
+      for(std::size_t i = bi * block; i < (std::min)(n, (bi + 1) * block); ++i)
+        function(i, found[bi]);
+    });
+    for(const std::vector<Face_pair>& pairs : found)
+      out.insert(out.end(), pairs.begin(), pairs.end());
+  }
+
+  // The candidate list: the pairs of triangles without a common vertex whose boxes, grown by the
+  // margin, overlap. They come from a hashed uniform grid of the grown boxes: each triangle is
+  // listed in every cell its box overlaps, and a pair is taken in the one cell that holds the low
+  // corner of the intersection of the boxes. Linear in the number of triangles.
+  void make_candidates()
+  {
+    const std::size_t nf = m_mesh.num_faces(), nv = m_mesh.num_vertices();
+    m_triangles.assign(nf, std::array<Vertex, 3>());
+    m_anchor.assign(nv, std::array<double, 3>());
+    for(Vertex v : m_mesh.vertices())
+    {
+      const auto& p = m_mesh.point(v);
+      m_anchor[std::size_t(v)] = {{p.x(), p.y(), p.z()}};
+    }
+    std::vector<CGAL::Bbox_3> boxes(nf);
+    double extent = 0;
+    std::size_t count = 0;
+    for(Face f : m_mesh.faces())
+    {
+      m_triangles[std::size_t(f)] = face_vertices(m_mesh, f);
+      const CGAL::Bbox_3 b = box(f);
+      boxes[std::size_t(f)] = b;
+      extent += (std::max)({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
+      ++count;
+    }
+    m_candidates.clear();
+    m_valid = true;
+    if(count == 0)
+      return;
+    extent /= double(count);
+    // A quarter of a triangle: the vertices of a relocation move less than that in most
+    // iterations, and grown boxes still meet few triangles beyond their neighbours.
+    m_margin = 0.25 * extent;
+    for(Face f : m_mesh.faces())
+    {
+      CGAL::Bbox_3& b = boxes[std::size_t(f)];
+      b = CGAL::Bbox_3(b.xmin() - m_margin, b.ymin() - m_margin, b.zmin() - m_margin, b.xmax() + m_margin,
+                       b.ymax() + m_margin, b.zmax() + m_margin);
+    }
+    // About the size of a grown box: a cell then holds a few triangles, a triangle a few cells.
+    m_cell = extent + 2 * m_margin;
+    if(!(m_cell > 0))
+      m_cell = 1;
+
+    // Counting sort of (cell, triangle) entries by the hash of the cell.
+    std::size_t entries = 0;
+    for(Face f : m_mesh.faces())
+      entries += number_of_cells(boxes[std::size_t(f)]);
+    std::size_t buckets = 1;
+    while(buckets < entries)
+      buckets *= 2;
+    std::vector<std::size_t> start(buckets + 1, 0);
+    for(Face f : m_mesh.faces())
+      for_each_cell(boxes[std::size_t(f)], [&](const Cell& c) { ++start[bucket(c, buckets) + 1]; });
+    for(std::size_t i = 0; i < buckets; ++i)
+      start[i + 1] += start[i];
+    std::vector<Face> listed(entries);
+    {
+      std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+      for(Face f : m_mesh.faces())
+        for_each_cell(boxes[std::size_t(f)], [&](const Cell& c) { listed[fill[bucket(c, buckets)]++] = f; });
+    }
+
+    collect_by_blocks(nf, m_candidates, [&](std::size_t fi, std::vector<Face_pair>& found) {
+      const Face f(static_cast<Face::size_type>(fi));
+      if(m_mesh.is_removed(f))
+        return;
+      const CGAL::Bbox_3& bf = boxes[fi];
+      const std::array<Vertex, 3>& tf = m_triangles[fi];
+      for_each_cell(bf, [&](const Cell& c) {
+        const std::size_t k = bucket(c, buckets);
+        for(std::size_t e = start[k]; e < start[k + 1]; ++e)
+        {
+          const Face g = listed[e];
+          if(!(f < g))
+            continue;
+          const CGAL::Bbox_3& bg = boxes[std::size_t(g)];
+          if(!CGAL::do_overlap(bf, bg))
+            continue;
+          const Cell low = cell_of((std::max)(bf.xmin(), bg.xmin()), (std::max)(bf.ymin(), bg.ymin()),
+                                   (std::max)(bf.zmin(), bg.zmin()));
+          if(low != c)
+            continue;
+          const std::array<Vertex, 3>& tg = m_triangles[std::size_t(g)];
+          bool common = false;
+          for(Vertex u : tf)
+            common = common || u == tg[0] || u == tg[1] || u == tg[2];
+          if(!common)
+            found.push_back(Face_pair(f, g));
+        }
+      });
+    });
+    // Two cells may share a bucket: a pair can be found twice.
+    std::sort(m_candidates.begin(), m_candidates.end());
+    m_candidates.erase(std::unique(m_candidates.begin(), m_candidates.end()), m_candidates.end());
+    m_candidates.shrink_to_fit();
+  }
 
   Cell cell_of(double x, double y, double z) const
   {
@@ -168,10 +275,88 @@ private:
     return std::size_t(h * 0x9E3779B97F4A7C15ull >> 20) & (buckets - 1);
   }
 
-  Point point(Vertex v) const
+  // The triangles around v, each with its other two vertices in the order of the face.
+  using Fan = boost::container::small_vector<std::pair<Face, std::array<Vertex, 2> >, 16>;
+
+  // The intersecting pairs among the triangles around v with a queried one. When the fan is
+  // embedded there are none; otherwise each such pair is tested.
+  void fan_pairs(Vertex v, const std::vector<char>& query, std::vector<Face_pair>& found) const
+  {
+    Fan fan;
+    bool queried = false;
+    for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      if(!m_mesh.is_border(h))
+      {
+        // The face is (source(h), v, target(next(h))).
+        fan.push_back({m_mesh.face(h), {{m_mesh.target(m_mesh.next(h)), m_mesh.source(h)}}});
+        queried = queried || query[std::size_t(m_mesh.face(h))];
+      }
+    if(!queried || fan.size() < 2 || is_embedded_fan(v, fan))
+      return;
+    for(std::size_t i = 0; i < fan.size(); ++i)
+      for(std::size_t j = i + 1; j < fan.size(); ++j)
+      {
+        const Face f = fan[i].first, g = fan[j].first;
+        if((query[std::size_t(f)] || query[std::size_t(g)]) && intersect(f, g))
+          found.push_back(f < g ? Face_pair(f, g) : Face_pair(g, f));
+      }
+  }
+
+  // Whether the triangles of `fan` meet only in the edges and at the vertex v they share. Seen
+  // along the coordinate axis nearest their mean normal (the projection then only drops a
+  // coordinate, and exact predicates stay exact), the triangles must be positively oriented
+  // sectors at v going at most once around it: the ray to a first rim vertex (an end of an open
+  // fan) lies in no sector but the ones it bounds. Then two sectors share only v or a bounding
+  // ray, each triangle projects one to one, and two triangles share only v or their common edge.
+  bool is_embedded_fan(Vertex v, const Fan& fan) const
   {
     const auto& p = m_mesh.point(v);
-    return Point(p.x(), p.y(), p.z());
+    std::array<double, 3> n{{0, 0, 0}};
+    for(const auto& t : fan)
+    {
+      const auto& a = m_mesh.point(t.second[0]);
+      const auto& b = m_mesh.point(t.second[1]);
+      const double ax = a.x() - p.x(), ay = a.y() - p.y(), az = a.z() - p.z();
+      const double bx = b.x() - p.x(), by = b.y() - p.y(), bz = b.z() - p.z();
+      n[0] += ay * bz - az * by;
+      n[1] += az * bx - ax * bz;
+      n[2] += ax * by - ay * bx;
+    }
+    const int axis = std::abs(n[0]) >= std::abs(n[1]) ? (std::abs(n[0]) >= std::abs(n[2]) ? 0 : 2)
+                                                       : (std::abs(n[1]) >= std::abs(n[2]) ? 1 : 2);
+    const CGAL::Orientation positive = n[axis] > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
+    const CGAL::Orientation negative = n[axis] > 0 ? CGAL::NEGATIVE : CGAL::POSITIVE;
+    auto project = [&](Vertex u) {
+      const auto& q = m_mesh.point(u);
+      return axis == 0 ? Epick::Point_2(q.y(), q.z())
+                       : (axis == 1 ? Epick::Point_2(q.z(), q.x()) : Epick::Point_2(q.x(), q.y()));
+    };
+    const Epick::Point_2 o = project(v);
+    for(const auto& t : fan)
+      if(CGAL::orientation(o, project(t.second[0]), project(t.second[1])) != positive)
+        return false;
+    auto sectors_at = [&](Vertex u) {
+      std::size_t k = 0;
+      for(const auto& t : fan)
+        k += (t.second[0] == u) + (t.second[1] == u);
+      return k;
+    };
+    Vertex start = fan[0].second[0];
+    for(const auto& t : fan)
+      if(sectors_at(t.second[0]) == 1)
+      {
+        start = t.second[0];
+        break;
+      }
+    if(sectors_at(start) > 2)
+      return false;
+    const Epick::Point_2 s = project(start);
+    for(const auto& t : fan)
+      if(t.second[0] != start && t.second[1] != start &&
+         CGAL::orientation(o, project(t.second[0]), s) != negative &&
+         CGAL::orientation(o, s, project(t.second[1])) != negative)
+        return false;
+    return true;
   }
 
   // Whether triangles f and g share a point they do not share through the mesh: for neighbours,
@@ -223,10 +408,12 @@ private:
   }
 
   const Work_mesh& m_mesh;
-  double m_cell = 1;                  // the side of a grid cell
-  std::vector<CGAL::Bbox_3> m_boxes;  // by face
-  std::vector<std::size_t> m_start;   // by bucket: where its triangles start in m_listed
-  std::vector<Face> m_listed;         // by bucket, the triangles listed in its cells
+  bool m_valid = false;
+  double m_margin = 0;                           // how far boxes were grown
+  double m_cell = 1;                             // the side of a grid cell
+  std::vector<std::array<Vertex, 3> > m_triangles; // by face, when the list was made
+  std::vector<std::array<double, 3> > m_anchor;    // by vertex, where it was then
+  std::vector<Face_pair> m_candidates;           // sorted
 };
 
 } // namespace Graphcut_remeshing

@@ -44,6 +44,15 @@ public:
     for(Face_record& r : m_faces)
       if(r.normal == Vector_3d::Zero())
         r.normal = frame(r.vertices[0]).normal;
+    for(Face_record& r : m_faces)
+    {
+      r.offset = r.normal.dot(point(r.vertices[0]));
+      for(int i = 0; i < 3; ++i)
+        if(r.across[i] != Mesh::null_face())
+          for(Vertex u : m_faces[std::size_t(r.across[i])].vertices)
+            if(u != r.vertices[(i + 1) % 3] && u != r.vertices[(i + 2) % 3])
+              r.rise[i] = r.normal.dot(point(u)) - r.offset;
+    }
   }
 
   const Mesh& mesh() const { return m_mesh; }
@@ -151,14 +160,19 @@ public:
         // stopping. Not across a sharp edge: there the other sheet may be closer (a thin part,
         // a concave crease) and tracking must stay on the side it came from.
         next_face = hint;
+        // With the closest point inside this triangle, a neighbour can only be closer across a
+        // dihedral that is concave on the side of x: elsewhere its points are no closer than
+        // the common edge, which is no closer than this triangle's plane.
+        const bool inside = w[0] > 0 && w[1] > 0 && w[2] > 0;
+        const double height = r.normal.dot(x) - r.offset;
         for(int i : {2, 0, 1}) // the order of the face's halfedges
         {
-          if(!((r.smooth_across >> i) & 1))
+          if(!((r.smooth_across >> i) & 1) || (inside && !(height * r.rise[i] > 0)))
             continue;
           const Face o = r.across[i];
           // The distance to a triangle is at least the distance to its plane.
           const Face_record& ro = m_faces[std::size_t(o)];
-          const double to_plane = ro.normal.dot(x - point(ro.vertices[0]));
+          const double to_plane = ro.normal.dot(x) - ro.offset;
           if(to_plane * to_plane > d * (1 + 1e-9))
             continue;
           std::array<double, 3> wo;
@@ -241,13 +255,17 @@ private:
     std::array<Vertex, 3> vertices;  // in the order of the face's halfedges
     std::array<Face, 3> across;      // the triangle across the edge opposite vertices[i], or null
     unsigned char smooth_across = 0; // bit i: across[i] is within smooth_cosine of this triangle
+    bool needle = false;             // is_needle_or_cap
     Vector_3d normal = Vector_3d::UnitZ();
+    double offset = 0;                // the plane is normal . x = offset
+    std::array<double, 3> rise{};     // height over the plane of across[i]'s third vertex
   };
 
   Vector_3d project(const Vector_3d& x, Face f, std::array<double, 3>& weights) const
   {
-    const std::array<Vertex, 3>& t = m_faces[std::size_t(f)].vertices;
-    return closest_point_on_triangle(x, point(t[0]), point(t[1]), point(t[2]), weights);
+    const Face_record& r = m_faces[std::size_t(f)];
+    return closest_point_on_triangle(x, point(r.vertices[0]), point(r.vertices[1]), point(r.vertices[2]),
+                                     weights, r.needle);
   }
 
   void collect_faces()
@@ -260,6 +278,7 @@ private:
     {
       Face_record& r = m_faces[std::size_t(f)];
       r.vertices = Graphcut_remeshing::face_vertices(m_mesh, f);
+      r.needle = is_needle_or_cap(point(r.vertices[0]), point(r.vertices[1]), point(r.vertices[2]));
       const auto h = m_mesh.halfedge(f);
       // The edge opposite vertices[i]: next(h) for 0, prev(h) for 1, h for 2.
       const std::array<typename Mesh::Halfedge_index, 3> side{{m_mesh.next(h), m_mesh.prev(h), h}};

@@ -71,7 +71,7 @@ public:
     : m_mesh(mesh), m_reference_mesh(mesh), m_reference(m_reference_mesh),
       m_reference_feature_edge(std::move(feature_edge)), m_reference_kind(std::move(kind)),
       m_polylines(m_reference_mesh, m_reference_feature_edge, m_reference_kind), m_options(options),
-      m_round(0)
+      m_round(0), m_intersections(mesh)
   {
     // The working mesh starts as the reference, index for index.
     m_state.feature_edge = m_reference_feature_edge;
@@ -92,7 +92,7 @@ public:
     }
     collect_feature_edges();
     // Intersections the input already has are not the optimisation's doing.
-    m_input_intersections = Triangle_intersections(m_mesh).all_pairs();
+    m_input_intersections = m_intersections.all_pairs();
     // Faces the input already made intersect are left to the relocation: no connectivity change
     // touches them, so their indices, and the list above, stay valid.
     m_intersection_frozen.assign(n, 0);
@@ -370,11 +370,10 @@ public:
   // Pairs of intersecting triangles that did not intersect in the input (exact predicates); with
   // `touched` (by vertex), only pairs with a triangle incident to a touched vertex, which are all
   // the new ones when the mesh had none before those vertices moved.
-  std::vector<std::pair<Face, Face> > new_self_intersections(const std::vector<char>* touched = nullptr) const
+  std::vector<std::pair<Face, Face> > new_self_intersections(const std::vector<char>* touched = nullptr)
   {
-    Triangle_intersections intersections(m_mesh);
     const std::vector<std::pair<Face, Face> > pairs =
-      touched ? intersections.pairs_touching(*touched) : intersections.all_pairs();
+      touched ? m_intersections.pairs_touching(*touched) : m_intersections.all_pairs();
     std::vector<std::pair<Face, Face> > fresh;
     std::set_difference(pairs.begin(), pairs.end(), m_input_intersections.begin(),
                         m_input_intersections.end(), std::back_inserter(fresh));
@@ -430,6 +429,7 @@ public:
         }
       m_mesh = mesh_before;
       m_state = state_before;
+      m_intersections.invalidate();
       collect_feature_edges(); // the undone pass may have split feature edges
       ++stats.number_of_undone_passes;
     }
@@ -801,6 +801,7 @@ private:
   std::vector<double> m_face_term;   // by face: its terms of eq. (1) at the current positions
   std::vector<double> m_vertex_term; // by vertex: its data term at its current position
   std::vector<double> m_edge_term;   // by feature-edge slot: its term at the current positions
+  Triangle_intersections m_intersections; // of the working mesh; told when its connectivity changes
   std::vector<std::pair<Face, Face> > m_input_intersections; // sorted
 };
 

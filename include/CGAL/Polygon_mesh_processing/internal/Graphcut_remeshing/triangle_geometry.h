@@ -84,16 +84,25 @@ inline double distance_to_segment(const Vector_3d& p, const Vector_3d& a, const 
   return (p - closest_point_on_segment(p, a, b, t)).norm();
 }
 
+// A needle or a cap: a triangle whose area is at the rounding level of its edges. It has no
+// reliable interior region: barycentric weights there would be noise.
+inline bool is_needle_or_cap(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c)
+{
+  const Vector_3d ab = b - a, ac = c - a;
+  const double longest2 = (std::max)({ab.squaredNorm(), ac.squaredNorm(), (c - b).squaredNorm()});
+  return ab.cross(ac).norm() <= 1e-12 * longest2;
+}
+
 // The point of triangle (a, b, c) closest to p, with its barycentric coordinates (Voronoi regions
-// of the vertices, then of the edges, then the interior).
+// of the vertices, then of the edges, then the interior); `needle` is is_needle_or_cap(a, b, c),
+// which callers with fixed triangles compute once.
 inline Vector_3d closest_point_on_triangle(const Vector_3d& p, const Vector_3d& a, const Vector_3d& b,
-                                           const Vector_3d& c, std::array<double, 3>& barycentric)
+                                           const Vector_3d& c, std::array<double, 3>& barycentric,
+                                           bool needle)
 {
   const Vector_3d ab = b - a, ac = c - a, ap = p - a;
-  // A needle or a cap (area at the rounding level of its edges) has no reliable interior region:
-  // the barycentric weights below would be noise. Its closest point is on its longest sides.
-  const double longest2 = (std::max)({ab.squaredNorm(), ac.squaredNorm(), (c - b).squaredNorm()});
-  if(ab.cross(ac).norm() <= 1e-12 * longest2)
+  // The closest point of a needle or a cap is on its longest sides.
+  if(needle)
   {
     const std::array<const Vector_3d*, 3> corner = {{&a, &b, &c}};
     double best = std::numeric_limits<double>::infinity();
@@ -149,6 +158,12 @@ inline Vector_3d closest_point_on_triangle(const Vector_3d& p, const Vector_3d& 
   const double v = vb / denominator, w = vc / denominator;
   barycentric = {{1 - v - w, v, w}};
   return a + v * ab + w * ac;
+}
+
+inline Vector_3d closest_point_on_triangle(const Vector_3d& p, const Vector_3d& a, const Vector_3d& b,
+                                           const Vector_3d& c, std::array<double, 3>& barycentric)
+{
+  return closest_point_on_triangle(p, a, b, c, barycentric, is_needle_or_cap(a, b, c));
 }
 
 } // namespace Graphcut_remeshing
