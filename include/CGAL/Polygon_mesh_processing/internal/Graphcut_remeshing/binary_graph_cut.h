@@ -15,15 +15,16 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_BINARY_GRAPH_CUT_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_BINARY_GRAPH_CUT_H
 
-#include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
+#include <boost/graph/compressed_sparse_row_graph.hpp>
+#include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
 #include <limits>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -37,9 +38,7 @@ class Binary_graph_cut
 public:
   static constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
 
-  explicit Binary_graph_cut(std::size_t number_of_variables)
-    : m_unary(number_of_variables, 0.), m_adjacent_terms(number_of_variables)
-  {}
+  explicit Binary_graph_cut(std::size_t number_of_variables) : m_unary(number_of_variables, 0.) {}
 
   std::size_t number_of_variables() const { return m_unary.size(); }
 
@@ -72,11 +71,7 @@ public:
       t.quadratic = {{e[3] - e[1] - e[2] + e[0], e[5] - e[1] - e[4] + e[0], e[6] - e[2] - e[4] + e[0]}};
       t.cubic = e[7] - e[3] - e[5] - e[6] + e[1] + e[2] + e[4] - e[0];
     }
-    const std::size_t index = m_terms.size();
     m_terms.push_back(t);
-    for(std::size_t v : t.variables)
-      if(v != none)
-        m_adjacent_terms[v].push_back(index);
   }
 
   // Energy of a labelling, straight from the terms (the exact energy, not the graph's bound).
@@ -147,6 +142,22 @@ private:
   void choose_mappings()
   {
     const std::size_t n = m_unary.size();
+    // The terms of each variable, in the order of the terms.
+    std::vector<std::size_t> first_term(n + 1, 0), adjacent_terms;
+    for(const Term& t : m_terms)
+      for(std::size_t v : t.variables)
+        if(v != none)
+          ++first_term[v + 1];
+    for(std::size_t i = 0; i < n; ++i)
+      first_term[i + 1] += first_term[i];
+    adjacent_terms.resize(first_term[n]);
+    {
+      std::vector<std::size_t> fill(first_term.begin(), first_term.end() - 1);
+      for(std::size_t ti = 0; ti < m_terms.size(); ++ti)
+        for(std::size_t v : m_terms[ti].variables)
+          if(v != none)
+            adjacent_terms[fill[v]++] = ti;
+    }
     m_mapping.assign(n, -1);
     std::vector<char> visited(m_terms.size(), 0);
     std::deque<std::size_t> queue;
@@ -163,11 +174,11 @@ private:
         map_term(ti);
         for(std::size_t v : m_terms[ti].variables)
           if(v != none)
-            for(std::size_t tj : m_adjacent_terms[v])
-              if(!visited[tj])
+            for(std::size_t a = first_term[v]; a < first_term[v + 1]; ++a)
+              if(!visited[adjacent_terms[a]])
               {
-                visited[tj] = 1;
-                queue.push_back(tj);
+                visited[adjacent_terms[a]] = 1;
+                queue.push_back(adjacent_terms[a]);
               }
       }
     }
@@ -220,7 +231,9 @@ private:
   {
     const std::size_t n = m_unary.size();
     std::vector<double> unary(n, 0.);                                 // over y
-    std::map<std::pair<std::size_t, std::size_t>, double> pairwise;   // over y, key (min, max)
+    // Pairwise coefficients over y, (min, max) of the variables, in the order they come; summed
+    // per pair below, in that same order.
+    std::vector<std::pair<std::pair<std::size_t, std::size_t>, double> > pairwise;
     // An auxiliary node w of a reduced cubic term: unary cost `unary` when w = 1, and a
     // (submodular, negative) coefficient `pairwise` on w * y for each of the three variables.
     struct Aux { std::array<std::size_t, 3> variables; double unary; double pairwise; };
@@ -238,7 +251,7 @@ private:
       const double sj = m_mapping[j] ? 1. : 0., gj = m_mapping[j] ? -1. : 1.;
       unary[i] += c * gi * sj;
       unary[j] += c * gj * si;
-      pairwise[std::make_pair((std::min)(i, j), (std::max)(i, j))] += c * gi * gj;
+      pairwise.push_back({{(std::min)(i, j), (std::max)(i, j)}, c * gi * gj});
     };
     auto add_cubic = [&](const std::array<std::size_t, 3>& v, double c) {
       // In y, after the mapping, c * x0 x1 x2 is again a cubic in y with coefficient
@@ -258,7 +271,7 @@ private:
       {
         const int a = pairs[p][0], b = pairs[p][1], d = 3 - a - b;
         if(v[a] != v[b])
-          pairwise[std::make_pair((std::min)(v[a], v[b]), (std::max)(v[a], v[b]))] += c * g[a] * g[b] * s[d];
+          pairwise.push_back({{(std::min)(v[a], v[b]), (std::max)(v[a], v[b])}, c * g[a] * g[b] * s[d]});
         else
           unary[v[a]] += c * g[a] * g[b] * s[d];
       }
@@ -275,7 +288,7 @@ private:
         {
           const std::size_t a = v[pairs[p][0]], b = v[pairs[p][1]];
           if(a != b)
-            pairwise[std::make_pair((std::min)(a, b), (std::max)(a, b))] += cy;
+            pairwise.push_back({{(std::min)(a, b), (std::max)(a, b)}, cy});
           else
             unary[a] += cy;
         }
@@ -299,6 +312,21 @@ private:
         if(t.cubic != 0)
           add_cubic(t.variables, t.cubic);
       }
+    }
+
+    std::stable_sort(pairwise.begin(), pairwise.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    {
+      std::size_t out = 0;
+      for(std::size_t k = 0; k < pairwise.size();)
+      {
+        double sum = 0;
+        const std::pair<std::size_t, std::size_t> key = pairwise[k].first;
+        for(; k < pairwise.size() && pairwise[k].first == key; ++k)
+          sum += pairwise[k].second;
+        pairwise[out++] = {key, sum};
+      }
+      pairwise.resize(out);
     }
 
     // Current labelling in y: x = 0 for all, so y_i = m_i.
@@ -326,32 +354,18 @@ private:
         unary[i] += a;     // a yi yj <= a yi, exact at yi = 0
     }
 
-    // The s-t graph: node index = variable, then auxiliary nodes, then s and t.
-    using Traits = boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS>;
-    using Graph = boost::adjacency_list<
-      boost::vecS, boost::vecS, boost::directedS,
-      boost::property<boost::vertex_index_t, long,
-        boost::property<boost::vertex_color_t, boost::default_color_type,
-          boost::property<boost::vertex_distance_t, long,
-            boost::property<boost::vertex_predecessor_t, Traits::edge_descriptor> > > >,
-      boost::property<boost::edge_capacity_t, double,
-        boost::property<boost::edge_residual_capacity_t, double,
-          boost::property<boost::edge_reverse_t, Traits::edge_descriptor> > > >;
-
+    // The s-t graph: node index = variable, then auxiliary nodes, then s and t. Its arcs are
+    // listed first, each with its reverse, then laid out by tail in a compressed sparse row graph
+    // (each node's arcs in the order they were listed): no allocation per arc.
     const std::size_t number_of_nodes = n + aux.size() + 2;
     const std::size_t source = n + aux.size(), sink = source + 1;
-    Graph g(number_of_nodes);
-    auto capacity = get(boost::edge_capacity, g);
-    auto reverse = get(boost::edge_reverse, g);
+    struct Arc { std::size_t tail, head; double capacity; std::size_t reverse; };
+    std::vector<Arc> arcs;
     auto add_edge_pair = [&](std::size_t u, std::size_t v, double c) {
       if(!(c > 0))
         return;
-      const auto e = boost::add_edge(u, v, g).first;
-      const auto r = boost::add_edge(v, u, g).first;
-      capacity[e] = c;
-      capacity[r] = 0;
-      reverse[e] = r;
-      reverse[r] = e;
+      arcs.push_back({u, v, c, arcs.size() + 1});
+      arcs.push_back({v, u, 0., arcs.size() - 1});
     };
     std::vector<double> node_unary(number_of_nodes, 0.);
     for(std::size_t i = 0; i < n; ++i)
@@ -380,13 +394,50 @@ private:
         add_edge_pair(i, sink, -u);   // paid when i is on the source side (label 0)
     }
 
-    boost::boykov_kolmogorov_max_flow(g, source, sink);
+    // Counting sort of the arcs by tail, stable.
+    std::vector<std::size_t> position(arcs.size());
+    {
+      std::vector<std::size_t> start(number_of_nodes + 1, 0);
+      for(const Arc& a : arcs)
+        ++start[a.tail + 1];
+      for(std::size_t i = 0; i < number_of_nodes; ++i)
+        start[i + 1] += start[i];
+      for(std::size_t k = 0; k < arcs.size(); ++k)
+        position[k] = start[arcs[k].tail]++;
+    }
+    std::vector<std::pair<std::size_t, std::size_t> > sorted(arcs.size());
+    std::vector<double> capacity(arcs.size()), residual(arcs.size());
+    for(std::size_t k = 0; k < arcs.size(); ++k)
+    {
+      sorted[position[k]] = {arcs[k].tail, arcs[k].head};
+      capacity[position[k]] = arcs[k].capacity;
+    }
+    using Graph = boost::compressed_sparse_row_graph<boost::directedS>;
+    using Arc_descriptor = boost::graph_traits<Graph>::edge_descriptor;
+    using Node_descriptor = boost::graph_traits<Graph>::vertex_descriptor;
+    const Graph g(boost::edges_are_sorted, sorted.begin(), sorted.end(), number_of_nodes);
+    std::vector<Arc_descriptor> reverse(arcs.size());
+    for(std::size_t k = 0; k < arcs.size(); ++k)
+      reverse[position[k]] = Arc_descriptor(Node_descriptor(arcs[k].head), position[arcs[k].reverse]);
+    arcs = std::vector<Arc>();
+    std::vector<Arc_descriptor> predecessor(number_of_nodes);
+    std::vector<boost::default_color_type> color(number_of_nodes);
+    std::vector<long> distance(number_of_nodes);
+    const auto arc_index = get(boost::edge_index, g);
+    const auto node_index = get(boost::vertex_index, g);
+    boost::boykov_kolmogorov_max_flow(
+      g, boost::make_iterator_property_map(capacity.begin(), arc_index),
+      boost::make_iterator_property_map(residual.begin(), arc_index),
+      boost::make_iterator_property_map(reverse.begin(), arc_index),
+      boost::make_iterator_property_map(predecessor.begin(), node_index),
+      boost::make_iterator_property_map(color.begin(), node_index),
+      boost::make_iterator_property_map(distance.begin(), node_index), node_index, Node_descriptor(source),
+      Node_descriptor(sink));
 
-    auto color = get(boost::vertex_color, g);
     std::vector<char> labels(n, 0);
     for(std::size_t i = 0; i < n; ++i)
     {
-      const bool y = get(color, i) != boost::black_color; // black: source tree, label 0
+      const bool y = color[i] != boost::black_color; // black: source tree, label 0
       labels[i] = static_cast<char>(y != (m_mapping[i] != 0)); // x = y xor m
     }
     return labels;
@@ -395,7 +446,6 @@ private:
   double m_constant = 0;
   std::vector<double> m_unary;
   std::vector<Term> m_terms;
-  std::vector<std::vector<std::size_t> > m_adjacent_terms;
   std::vector<signed char> m_mapping;
   std::size_t m_representable = 0;
 };

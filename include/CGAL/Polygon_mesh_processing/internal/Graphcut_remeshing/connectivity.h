@@ -630,14 +630,14 @@ private:
   bool acceptable(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c, Vertex near) const
   {
     Face hint = m_state.vertex_hint[std::size_t(near)];
-    const Vector_3d normal = m_reference.frame_at_closest_point((a + b + c) / 3, hint).normal;
-    return is_acceptable_triangle(a, b, c, normal);
+    m_reference.closest_point((a + b + c) / 3, hint);
+    return is_acceptable_triangle(a, b, c, m_reference.normal(hint));
   }
 
   Vector_3d project(const Vector_3d& x, Vertex near) const
   {
     Face hint = m_state.vertex_hint[std::size_t(near)];
-    return m_reference.frame_at_closest_point(x, hint).origin;
+    return m_reference.closest_point(x, hint);
   }
 
   // The point of the reference polyline halfway, along it, from a to b, the ends of a sharp edge.
@@ -672,7 +672,7 @@ private:
     m_state.vertex_hint[std::size_t(v)] = m_state.vertex_hint[std::size_t(from)];
     const Vector_3d x = position(v);
     m_state.closest[std::size_t(v)] = m_reference.closest_vertex(x, m_state.closest[std::size_t(v)]);
-    m_reference.frame_at_closest_point(x, m_state.vertex_hint[std::size_t(v)]);
+    m_reference.closest_point(x, m_state.vertex_hint[std::size_t(v)]);
   }
 
   // A priority queue of edges by gain, best first: an entry is stale once its edge has been

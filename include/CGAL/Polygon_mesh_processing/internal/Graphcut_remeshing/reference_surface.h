@@ -110,6 +110,16 @@ public:
     return squared_distance_approximation(x, frame_at(hint, c, w), epsilon);
   }
 
+  // The point of the reference triangles closest to x, searched from `hint` (updated).
+  Vector_3d closest_point(const Vector_3d& x, Face& hint) const
+  {
+    std::array<double, 3> w;
+    return closest_point(x, hint, w);
+  }
+
+  // The unit normal of reference triangle f, the normal of the frames on it.
+  const Vector_3d& normal(Face f) const { return m_faces[std::size_t(f)].normal; }
+
   // The descent of frame_at_closest_point: the closest point, its triangle (in `hint`) and its
   // barycentric coordinates there.
   Vector_3d closest_point(const Vector_3d& x, Face& hint, std::array<double, 3>& w) const
@@ -203,7 +213,7 @@ public:
     const Face_record& r = m_faces[std::size_t(f)];
     Local_frame result;
     result.origin = c;
-    result.normal = r.normal;
+    result.normal = normal(f);
     const Local_frame& f0 = frame(r.vertices[0]);
     Vector_3d d1 = Vector_3d::Zero();
     for(int i = 0; i < 3; ++i)

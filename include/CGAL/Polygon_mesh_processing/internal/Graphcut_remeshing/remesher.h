@@ -199,10 +199,12 @@ public:
     std::vector<Vector_3d> proposal(n);
     std::vector<Location> proposal_location(n);
     std::vector<double> proposal_data(n, 0);
+    m_proposal_face_term.resize(m_mesh.num_halfedges());
     for_each_vertex([&](Vertex v) {
       const std::size_t i = std::size_t(v);
       CGAL::Random rng(item_seed(m_options.random_seed, m_round, i));
-      proposed[i] = propose(v, temperature, greedy, rng, proposal[i], proposal_location[i]);
+      proposed[i] = propose(v, temperature, greedy, rng, proposal[i], proposal_location[i],
+                            m_proposal_face_term);
       if(proposed[i])
         proposal_data[i] = data_energy(v, proposal[i]);
     });
@@ -282,6 +284,8 @@ public:
                            double forbidden, Triangle_table& t) const
   {
     const std::array<Vertex, 3> v = face_vertices(f);
+    const Halfedge h = m_mesh.halfedge(f);
+    const std::array<Halfedge, 3> to{{m_mesh.prev(h), h, m_mesh.next(h)}}; // to v[i]
     std::array<int, 3> slot{};
     for(int i = 0; i < 3; ++i)
       if(variable[std::size_t(v[i])] != Binary_graph_cut::none)
@@ -304,6 +308,8 @@ public:
         t.table[mask] = m_face_term[std::size_t(f)];
       else if(!is_acceptable_triangle(p[0], p[1], p[2], current_normal))
         t.table[mask] = forbidden;
+      else if((mask & (mask - 1)) == 0) // one vertex moves: its proposal evaluated this already
+        t.table[mask] = m_proposal_face_term[std::size_t(to[slot[mask == 1 ? 0 : (mask == 2 ? 1 : 2)]])];
       else
         t.table[mask] = triangle_energy(f, p[0], p[1], p[2]);
     }
@@ -574,8 +580,11 @@ private:
   // eq. (7): the energy terms that depend on the position x of vertex v. The terms are not
   // negative: once their sum reaches `bound` the rest is not evaluated (a candidate that reaches
   // the current local evidence is refused whatever the rest adds).
-  double local_evidence(Vertex v, const Vector_3d& x,
-                        double bound = std::numeric_limits<double>::infinity()) const
+  //
+  // With `record`, the terms of each triangle are also written there, at the index of the
+  // triangle's halfedge to v.
+  double local_evidence(Vertex v, const Vector_3d& x, double bound = std::numeric_limits<double>::infinity(),
+                        std::vector<double>* record = nullptr) const
   {
     double u = data_energy(v, x);
     for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
@@ -583,7 +592,10 @@ private:
       {
         if(!(u < bound))
           return u;
-        u += triangle_energy(m_mesh.face(h), v, x);
+        const double term = triangle_energy(m_mesh.face(h), v, x);
+        if(record)
+          (*record)[std::size_t(h)] = term;
+        u += term;
       }
     if(kind_of(v) == Vertex_kind::feature_vertex)
       for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
@@ -600,7 +612,6 @@ private:
   // any term at the current positions).
   void update_tracking()
   {
-    std::array<double, 3> w;
     for_each_vertex([&](Vertex v) {
       if(kind_of(v) == Vertex_kind::feature_vertex)
       {
@@ -614,20 +625,18 @@ private:
         return;
       const Vector_3d x = position(v);
       m_state.closest[std::size_t(v)] = m_reference.closest_vertex(x, m_state.closest[std::size_t(v)]);
-      std::array<double, 3> w;
-      m_reference.closest_point(x, m_state.vertex_hint[std::size_t(v)], w);
+      m_reference.closest_point(x, m_state.vertex_hint[std::size_t(v)]);
     });
     for_each_face([&](Face f) {
       const std::array<Vertex, 3> t = face_vertices(f);
-      std::array<double, 3> w;
       m_reference.closest_point((position(t[0]) + position(t[1]) + position(t[2])) / 3,
-                                m_state.face_hint[std::size_t(f)], w);
+                                m_state.face_hint[std::size_t(f)]);
     });
     for(std::size_t i = 0; i < m_feature_edges.size(); ++i)
     {
       const Halfedge h = m_mesh.halfedge(m_feature_edges[i]);
       m_reference.closest_point((position(m_mesh.source(h)) + position(m_mesh.target(h))) / 2,
-                                m_state.edge_hint[std::size_t(m_feature_edges[i])], w);
+                                m_state.edge_hint[std::size_t(m_feature_edges[i])]);
     }
   }
 
@@ -656,9 +665,10 @@ private:
   }
 
   // Section 2.3: the first candidate, in the order of the paper, that lies in the freedom sphere
-  // and lowers the local evidence. False when there is none.
+  // and lowers the local evidence. False when there is none. The terms of the triangles around v
+  // with v at the candidate go to `face_term`, by the triangles' halfedges to v.
   bool propose(Vertex v, double temperature, bool greedy, CGAL::Random& rng, Vector_3d& out,
-               Location& out_location) const
+               Location& out_location, std::vector<double>& face_term) const
   {
     if(kind_of(v) == Vertex_kind::fixed_vertex)
       return false;
@@ -674,14 +684,14 @@ private:
     const double before = current_local_evidence(v);
 
     if(kind_of(v) == Vertex_kind::feature_vertex)
-      return propose_on_feature(v, x, link, before, temperature, greedy, rng, out, out_location);
+      return propose_on_feature(v, x, link, before, temperature, greedy, rng, out, out_location, face_term);
 
     const Local_frame& frame = m_reference.frame(m_state.closest[std::size_t(v)]);
     const double sigma = freedom_radius(temperature, ring_radius(x, link), frame.min_radius());
     if(!(sigma > 0))
       return false;
     auto accept = [&](const Vector_3d& c) {
-      if(!((c - x).norm() <= sigma) || !(local_evidence(v, c, before) < before))
+      if(!((c - x).norm() <= sigma) || !(local_evidence(v, c, before, &face_term) < before))
         return false;
       out = c;
       return true;
@@ -691,7 +701,7 @@ private:
     // term alone decides, as the paper intends its tangent moves to.
     auto on_surface = [&](const Vector_3d& c) {
       Face hint = m_state.vertex_hint[std::size_t(v)];
-      return m_reference.frame_at_closest_point(c, hint).origin;
+      return m_reference.closest_point(c, hint);
     };
 
     if(!greedy)
@@ -733,7 +743,8 @@ private:
   // Vertices on a feature slide along their reference polyline: the 1D Laplacian towards the
   // middle of their two feature neighbours, or a random (greedy: downhill) slide.
   bool propose_on_feature(Vertex v, const Vector_3d& x, const Link& link, double before, double temperature,
-                          bool greedy, CGAL::Random& rng, Vector_3d& out, Location& out_location) const
+                          bool greedy, CGAL::Random& rng, Vector_3d& out, Location& out_location,
+                          std::vector<double>& face_term) const
   {
     const Location here = m_state.location[std::size_t(v)];
     // The polyline is followed exactly, so its curvature does not limit the sphere.
@@ -743,7 +754,7 @@ private:
     auto accept = [&](const Vector_3d& displacement) {
       const Location l = m_polylines.move(here, displacement);
       const Vector_3d c = m_polylines.point(l);
-      if(!((c - x).norm() <= sigma) || (c - x).norm() == 0 || !(local_evidence(v, c, before) < before))
+      if(!((c - x).norm() <= sigma) || (c - x).norm() == 0 || !(local_evidence(v, c, before, &face_term) < before))
         return false;
       out = c;
       out_location = l;
@@ -801,6 +812,7 @@ private:
   std::vector<double> m_face_term;   // by face: its terms of eq. (1) at the current positions
   std::vector<double> m_vertex_term; // by vertex: its data term at its current position
   std::vector<double> m_edge_term;   // by feature-edge slot: its term at the current positions
+  std::vector<double> m_proposal_face_term; // by halfedge h: face(h)'s terms with target(h) at its candidate
   Triangle_intersections m_intersections; // of the working mesh; told when its connectivity changes
   std::vector<std::pair<Face, Face> > m_input_intersections; // sorted
 };
