@@ -29,6 +29,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -181,11 +182,18 @@ private:
     // A quarter of a triangle: the vertices of a relocation move less than that in most
     // iterations, and grown boxes still meet few triangles beyond their neighbours.
     m_margin = 0.25 * extent;
+    // Grown, then in single precision (rounded outwards) for a compact grid; the cells are those
+    // of the single-precision boxes.
+    const float inf = std::numeric_limits<float>::infinity();
+    std::vector<std::array<float, 6> > small_boxes(nf);
     for(Face f : m_mesh.faces())
     {
       CGAL::Bbox_3& b = boxes[std::size_t(f)];
-      b = CGAL::Bbox_3(b.xmin() - m_margin, b.ymin() - m_margin, b.zmin() - m_margin, b.xmax() + m_margin,
-                       b.ymax() + m_margin, b.zmax() + m_margin);
+      std::array<float, 6>& s = small_boxes[std::size_t(f)];
+      s = {{std::nextafter(float(b.xmin() - m_margin), -inf), std::nextafter(float(b.ymin() - m_margin), -inf),
+            std::nextafter(float(b.zmin() - m_margin), -inf), std::nextafter(float(b.xmax() + m_margin), inf),
+            std::nextafter(float(b.ymax() + m_margin), inf), std::nextafter(float(b.zmax() + m_margin), inf)}};
+      b = CGAL::Bbox_3(s[0], s[1], s[2], s[3], s[4], s[5]);
     }
     // About the size of a grown box: a cell then holds a few triangles, a triangle a few cells.
     m_cell = extent + 2 * m_margin;
@@ -204,11 +212,20 @@ private:
       for_each_cell(boxes[std::size_t(f)], [&](const Cell& c) { ++start[bucket(c, buckets) + 1]; });
     for(std::size_t i = 0; i < buckets; ++i)
       start[i + 1] += start[i];
-    std::vector<Face> listed(entries);
+    // Each entry carries its box, so that a bucket is read in one sweep of memory.
+    struct Entry
+    {
+      Face face;
+      std::array<float, 6> box;
+    };
+    std::vector<Entry> listed(entries);
     {
       std::vector<std::size_t> fill(start.begin(), start.end() - 1);
       for(Face f : m_mesh.faces())
-        for_each_cell(boxes[std::size_t(f)], [&](const Cell& c) { listed[fill[bucket(c, buckets)]++] = f; });
+      {
+        const Entry entry{f, small_boxes[std::size_t(f)]};
+        for_each_cell(boxes[std::size_t(f)], [&](const Cell& c) { listed[fill[bucket(c, buckets)]++] = entry; });
+      }
     }
 
     collect_by_blocks(nf, m_candidates, [&](std::size_t fi, std::vector<Face_pair>& found) {
@@ -217,18 +234,18 @@ private:
         return;
       const CGAL::Bbox_3& bf = boxes[fi];
       const std::array<Vertex, 3>& tf = m_triangles[fi];
+      const std::array<float, 6>& af = small_boxes[fi];
       for_each_cell(bf, [&](const Cell& c) {
         const std::size_t k = bucket(c, buckets);
         for(std::size_t e = start[k]; e < start[k + 1]; ++e)
         {
-          const Face g = listed[e];
+          const Face g = listed[e].face;
           if(!(f < g))
             continue;
-          const CGAL::Bbox_3& bg = boxes[std::size_t(g)];
-          if(!CGAL::do_overlap(bf, bg))
+          const std::array<float, 6>& ag = listed[e].box;
+          if(ag[0] > af[3] || af[0] > ag[3] || ag[1] > af[4] || af[1] > ag[4] || ag[2] > af[5] || af[2] > ag[5])
             continue;
-          const Cell low = cell_of((std::max)(bf.xmin(), bg.xmin()), (std::max)(bf.ymin(), bg.ymin()),
-                                   (std::max)(bf.zmin(), bg.zmin()));
+          const Cell low = cell_of((std::max)(af[0], ag[0]), (std::max)(af[1], ag[1]), (std::max)(af[2], ag[2]));
           if(low != c)
             continue;
           const std::array<Vertex, 3>& tg = m_triangles[std::size_t(g)];

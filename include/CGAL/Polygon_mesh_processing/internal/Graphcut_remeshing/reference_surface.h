@@ -268,14 +268,30 @@ private:
     bool needle = false;             // is_needle_or_cap
     Vector_3d normal = Vector_3d::UnitZ();
     double offset = 0;                // the plane is normal . x = offset
+    // e0.e0, e0.e1, e1.e1 for the edges e0, e1 from vertices[0], then 1 / the Gram determinant.
+    std::array<double, 4> gram{};
     std::array<double, 3> rise{};     // height over the plane of across[i]'s third vertex
   };
 
   Vector_3d project(const Vector_3d& x, Face f, std::array<double, 3>& weights) const
   {
     const Face_record& r = m_faces[std::size_t(f)];
-    return closest_point_on_triangle(x, point(r.vertices[0]), point(r.vertices[1]), point(r.vertices[2]),
-                                     weights, r.needle);
+    const Vector_3d& a = point(r.vertices[0]);
+    if(!r.needle)
+    {
+      // Most queries are near the surface and project inside the triangle: barycentric
+      // coordinates of the projection onto the plane from the triangle's Gram matrix.
+      const Vector_3d e0 = point(r.vertices[1]) - a, e1 = point(r.vertices[2]) - a, ax = x - a;
+      const double d0 = e0.dot(ax), d1 = e1.dot(ax);
+      const double v = (r.gram[2] * d0 - r.gram[1] * d1) * r.gram[3];
+      const double w = (r.gram[0] * d1 - r.gram[1] * d0) * r.gram[3];
+      if(v > 0 && w > 0 && v + w < 1)
+      {
+        weights = {{1 - v - w, v, w}};
+        return a + v * e0 + w * e1;
+      }
+    }
+    return closest_point_on_triangle(x, a, point(r.vertices[1]), point(r.vertices[2]), weights, r.needle);
   }
 
   void collect_faces()
@@ -289,6 +305,13 @@ private:
       Face_record& r = m_faces[std::size_t(f)];
       r.vertices = Graphcut_remeshing::face_vertices(m_mesh, f);
       r.needle = is_needle_or_cap(point(r.vertices[0]), point(r.vertices[1]), point(r.vertices[2]));
+      const Vector_3d e0 = point(r.vertices[1]) - point(r.vertices[0]), e1 = point(r.vertices[2]) - point(r.vertices[0]);
+      r.gram = {{e0.dot(e0), e0.dot(e1), e1.dot(e1), 0}};
+      const double determinant = r.gram[0] * r.gram[2] - r.gram[1] * r.gram[1];
+      if(!r.needle && determinant > 0)
+        r.gram[3] = 1 / determinant;
+      else
+        r.needle = true; // no reliable interior either
       const auto h = m_mesh.halfedge(f);
       // The edge opposite vertices[i]: next(h) for 0, prev(h) for 1, h for 2.
       const std::array<typename Mesh::Halfedge_index, 3> side{{m_mesh.next(h), m_mesh.prev(h), h}};

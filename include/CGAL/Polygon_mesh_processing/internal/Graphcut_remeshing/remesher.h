@@ -198,20 +198,22 @@ public:
     std::vector<char> proposed(n, 0);
     std::vector<Vector_3d> proposal(n);
     std::vector<Location> proposal_location(n);
+    std::vector<Face> proposal_face(n); // a free vertex's candidate lies on this reference triangle
     std::vector<double> proposal_data(n, 0);
     m_proposal_face_term.resize(m_mesh.num_halfedges());
     for_each_vertex([&](Vertex v) {
       const std::size_t i = std::size_t(v);
       CGAL::Random rng(item_seed(m_options.random_seed, m_round, i));
-      proposed[i] = propose(v, temperature, greedy, rng, proposal[i], proposal_location[i],
+      proposed[i] = propose(v, temperature, greedy, rng, proposal[i], proposal_location[i], proposal_face[i],
                             m_proposal_face_term);
       if(proposed[i])
-        proposal_data[i] = data_energy(v, proposal[i]);
+        proposal_data[i] = data_energy(v, proposal[i], proposal_face[i]);
     });
     std::vector<std::size_t> variable(n, Binary_graph_cut::none);
     std::vector<Vertex> moving;
     std::vector<Vector_3d> candidate;
     std::vector<Location> candidate_location;
+    std::vector<Face> candidate_face;
     std::vector<double> candidate_data;
     for(Vertex v : m_mesh.vertices())
       if(proposed[std::size_t(v)])
@@ -220,6 +222,7 @@ public:
         moving.push_back(v);
         candidate.push_back(proposal[std::size_t(v)]);
         candidate_location.push_back(proposal_location[std::size_t(v)]);
+        candidate_face.push_back(proposal_face[std::size_t(v)]);
         candidate_data.push_back(proposal_data[std::size_t(v)]);
       }
     if(moving.empty())
@@ -260,9 +263,13 @@ public:
           }
       if(clean)
       {
+        // Where the candidates were found on the reference, so that the data terms kept are the
+        // ones the cut was given.
         for(std::size_t i = 0; i < moving.size(); ++i)
           if(labels[i] && kind_of(moving[i]) == Vertex_kind::feature_vertex)
             m_state.location[std::size_t(moving[i])] = candidate_location[i];
+          else if(labels[i] && kind_of(moving[i]) == Vertex_kind::free_vertex)
+            m_state.vertex_hint[std::size_t(moving[i])] = candidate_face[i];
         update_terms(touched);
         return moved;
       }
@@ -478,11 +485,13 @@ private:
 
   // lambda_data F(x) for a free vertex; vertices on features lie on the reference polylines by
   // construction and fixed vertices do not move, so they have no data term.
-  double data_energy(Vertex v, const Vector_3d& x) const
+  // The search starts from `hint`, by default the vertex's triangle.
+  double data_energy(Vertex v, const Vector_3d& x, Face hint = Work_mesh::null_face()) const
   {
     if(kind_of(v) != Vertex_kind::free_vertex)
       return 0;
-    return m_options.weights.lambda_data * squared_distance(x, m_state.vertex_hint[std::size_t(v)]);
+    return m_options.weights.lambda_data *
+           squared_distance(x, hint != Work_mesh::null_face() ? hint : m_state.vertex_hint[std::size_t(v)]);
   }
 
   // The terms of eq. (1) that belong to triangle f at positions (a, b, c): its shape, and beyond
@@ -582,11 +591,11 @@ private:
   // the current local evidence is refused whatever the rest adds).
   //
   // With `record`, the terms of each triangle are also written there, at the index of the
-  // triangle's halfedge to v.
+  // triangle's halfedge to v. `hint` is where the search for the data term of v starts.
   double local_evidence(Vertex v, const Vector_3d& x, double bound = std::numeric_limits<double>::infinity(),
-                        std::vector<double>* record = nullptr) const
+                        std::vector<double>* record = nullptr, Face hint = Work_mesh::null_face()) const
   {
-    double u = data_energy(v, x);
+    double u = data_energy(v, x, hint);
     for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
       if(!m_mesh.is_border(h))
       {
@@ -666,9 +675,10 @@ private:
 
   // Section 2.3: the first candidate, in the order of the paper, that lies in the freedom sphere
   // and lowers the local evidence. False when there is none. The terms of the triangles around v
-  // with v at the candidate go to `face_term`, by the triangles' halfedges to v.
+  // with v at the candidate go to `face_term`, by the triangles' halfedges to v; a free vertex's
+  // candidate lies on the reference triangle `out_face`.
   bool propose(Vertex v, double temperature, bool greedy, CGAL::Random& rng, Vector_3d& out,
-               Location& out_location, std::vector<double>& face_term) const
+               Location& out_location, Face& out_face, std::vector<double>& face_term) const
   {
     if(kind_of(v) == Vertex_kind::fixed_vertex)
       return false;
@@ -690,18 +700,20 @@ private:
     const double sigma = freedom_radius(temperature, ring_radius(x, link), frame.min_radius());
     if(!(sigma > 0))
       return false;
+    Face face = Work_mesh::null_face(); // where the last candidate was brought onto the reference
     auto accept = [&](const Vector_3d& c) {
-      if(!((c - x).norm() <= sigma) || !(local_evidence(v, c, before, &face_term) < before))
+      if(!((c - x).norm() <= sigma) || !(local_evidence(v, c, before, &face_term, face) < before))
         return false;
       out = c;
+      out_face = face;
       return true;
     };
     // Beyond the paper: a tangent-plane move leaves a curved surface by about k d^2 / 2; bringing
     // the candidate back onto the reference triangles keeps the data term near zero, so the shape
     // term alone decides, as the paper intends its tangent moves to.
     auto on_surface = [&](const Vector_3d& c) {
-      Face hint = m_state.vertex_hint[std::size_t(v)];
-      return m_reference.closest_point(c, hint);
+      face = m_state.vertex_hint[std::size_t(v)];
+      return m_reference.closest_point(c, face);
     };
 
     if(!greedy)
@@ -722,15 +734,12 @@ private:
       return false;
     }
 
-    // Greedy phase: along the negative gradient of the local evidence (central differences),
-    // brought back onto the reference like the other candidates.
+    // Greedy phase: along the negative gradient of the local evidence (forward differences from
+    // its value here, kept), brought back onto the reference like the other candidates.
     const double step = 1e-3 * sigma;
     Vector_3d gradient;
     for(int a = 0; a < 3; ++a)
-    {
-      const Vector_3d e = Vector_3d::Unit(a) * step;
-      gradient[a] = (local_evidence(v, x + e) - local_evidence(v, x - e)) / (2 * step);
-    }
+      gradient[a] = (local_evidence(v, x + Vector_3d::Unit(a) * step) - before) / step;
     if(!(gradient.norm() > 0) || !std::isfinite(gradient.norm()))
       return false;
     const Vector_3d descent = -gradient.normalized();
