@@ -228,36 +228,32 @@ private:
       }
     }
 
-    collect_by_blocks(nf, m_candidates, [&](std::size_t fi, std::vector<Face_pair>& found) {
-      const Face f(static_cast<Face::size_type>(fi));
-      if(m_mesh.is_removed(f))
-        return;
-      const CGAL::Bbox_3& bf = boxes[fi];
-      const std::array<Vertex, 3>& tf = m_triangles[fi];
-      const std::array<float, 6>& af = small_boxes[fi];
-      for_each_cell(bf, [&](const Cell& c) {
-        const std::size_t k = bucket(c, buckets);
-        for(std::size_t e = start[k]; e < start[k + 1]; ++e)
+    // The pairs of each bucket, each pair in the bucket of the cell that holds the low corner of
+    // the intersection of its boxes (both boxes overlap that cell, so both are listed there).
+    collect_by_blocks(buckets, m_candidates, [&](std::size_t k, std::vector<Face_pair>& found) {
+      for(std::size_t i = start[k]; i < start[k + 1]; ++i)
+        for(std::size_t j = i + 1; j < start[k + 1]; ++j)
         {
-          const Face g = listed[e].face;
-          if(!(f < g))
+          const Entry& ei = listed[i];
+          const Entry& ej = listed[j];
+          const std::array<float, 6>& a = ei.box;
+          const std::array<float, 6>& b = ej.box;
+          if(ei.face == ej.face || b[0] > a[3] || a[0] > b[3] || b[1] > a[4] || a[1] > b[4] || b[2] > a[5] ||
+             a[2] > b[5])
             continue;
-          const std::array<float, 6>& ag = listed[e].box;
-          if(ag[0] > af[3] || af[0] > ag[3] || ag[1] > af[4] || af[1] > ag[4] || ag[2] > af[5] || af[2] > ag[5])
+          if(bucket(cell_of((std::max)(a[0], b[0]), (std::max)(a[1], b[1]), (std::max)(a[2], b[2])), buckets) != k)
             continue;
-          const Cell low = cell_of((std::max)(af[0], ag[0]), (std::max)(af[1], ag[1]), (std::max)(af[2], ag[2]));
-          if(low != c)
-            continue;
-          const std::array<Vertex, 3>& tg = m_triangles[std::size_t(g)];
+          const std::array<Vertex, 3>& ti = m_triangles[std::size_t(ei.face)];
+          const std::array<Vertex, 3>& tj = m_triangles[std::size_t(ej.face)];
           bool common = false;
-          for(Vertex u : tf)
-            common = common || u == tg[0] || u == tg[1] || u == tg[2];
+          for(Vertex u : ti)
+            common = common || u == tj[0] || u == tj[1] || u == tj[2];
           if(!common)
-            found.push_back(Face_pair(f, g));
+            found.push_back(ei.face < ej.face ? Face_pair(ei.face, ej.face) : Face_pair(ej.face, ei.face));
         }
-      });
     });
-    // Two cells may share a bucket: a pair can be found twice.
+    // Two cells may share a bucket, and a triangle be listed there twice: a pair can be found
+    // more than once.
     std::sort(m_candidates.begin(), m_candidates.end());
     m_candidates.erase(std::unique(m_candidates.begin(), m_candidates.end()), m_candidates.end());
     m_candidates.shrink_to_fit();
