@@ -16,6 +16,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_INTERSECTIONS_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
 #include <CGAL/Bbox_3.h>
@@ -323,18 +324,10 @@ private:
   // ray, each triangle projects one to one, and two triangles share only v or their common edge.
   bool is_embedded_fan(Vertex v, const Fan& fan) const
   {
-    const auto& p = m_mesh.point(v);
-    std::array<double, 3> n{{0, 0, 0}};
+    const Vector_3d p = to_vector(m_mesh.point(v));
+    Vector_3d n = Vector_3d::Zero();
     for(const auto& t : fan)
-    {
-      const auto& a = m_mesh.point(t.second[0]);
-      const auto& b = m_mesh.point(t.second[1]);
-      const double ax = a.x() - p.x(), ay = a.y() - p.y(), az = a.z() - p.z();
-      const double bx = b.x() - p.x(), by = b.y() - p.y(), bz = b.z() - p.z();
-      n[0] += ay * bz - az * by;
-      n[1] += az * bx - ax * bz;
-      n[2] += ax * by - ay * bx;
-    }
+      n += area_vector(p, to_vector(m_mesh.point(t.second[0])), to_vector(m_mesh.point(t.second[1])));
     const int axis = std::abs(n[0]) >= std::abs(n[1]) ? (std::abs(n[0]) >= std::abs(n[2]) ? 0 : 2)
                                                        : (std::abs(n[1]) >= std::abs(n[2]) ? 1 : 2);
     const CGAL::Orientation positive = n[axis] > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
@@ -376,7 +369,8 @@ private:
   // a point other than their common vertex or edge.
   bool intersect(Face f, Face g) const
   {
-    const std::array<Vertex, 3> a = face_vertices(m_mesh, f), b = face_vertices(m_mesh, g);
+    const std::array<Vertex, 3>& a = m_triangles[std::size_t(f)];
+    const std::array<Vertex, 3>& b = m_triangles[std::size_t(g)];
     // Put the shared vertices first, in the same order in both.
     std::array<Vertex, 3> fa = a, fb = b;
     int shared = 0;
