@@ -15,6 +15,8 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_BINARY_GRAPH_CUT_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_BINARY_GRAPH_CUT_H
 
+#include <CGAL/assertions.h>
+
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 #include <boost/graph/compressed_sparse_row_graph.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -23,7 +25,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -54,11 +55,11 @@ public:
   void add_term(std::size_t i, std::size_t j, std::size_t k, const std::array<double, 8>& e)
   {
     Term t;
-    t.variables = {{i, j, k}};
+    t.variables = {{Index(i), Index(j), k == none ? no_index : Index(k)}};
     if(k == none)
     {
       // e(a,b) = e00 + a(e10-e00) + b(e01-e00) + ab(e11-e10-e01+e00)
-      t.constant = e[0];
+      m_constant += e[0];
       t.linear = {{e[1] - e[0], e[2] - e[0], 0.}};
       t.quadratic = {{e[3] - e[1] - e[2] + e[0], 0., 0.}}; // pairs (i,j), (i,k), (j,k)
       t.cubic = 0;
@@ -66,7 +67,7 @@ public:
     else
     {
       // Moebius inversion of the 8-entry table into the multilinear coefficients.
-      t.constant = e[0];
+      m_constant += e[0];
       t.linear = {{e[1] - e[0], e[2] - e[0], e[4] - e[0]}};
       t.quadratic = {{e[3] - e[1] - e[2] + e[0], e[5] - e[1] - e[4] + e[0], e[6] - e[2] - e[4] + e[0]}};
       t.cubic = e[7] - e[3] - e[5] - e[6] + e[1] + e[2] + e[4] - e[0];
@@ -97,10 +98,14 @@ public:
   }
 
 private:
+  // Variables and graph nodes in 32 bits: the terms and arcs of a large mesh are many.
+  using Index = std::uint32_t;
+  static constexpr Index no_index = (std::numeric_limits<Index>::max)();
+
+  // A term without its constant (summed into m_constant).
   struct Term
   {
-    std::array<std::size_t, 3> variables;
-    double constant;
+    std::array<Index, 3> variables; // the third is no_index for a pairwise term
     std::array<double, 3> linear;
     std::array<double, 3> quadratic; // (0,1), (0,2), (1,2)
     double cubic;
@@ -108,9 +113,9 @@ private:
     double value(const std::vector<char>& labels) const
     {
       const double a = labels[variables[0]], b = labels[variables[1]];
-      const double c = variables[2] == none ? 0. : double(labels[variables[2]]);
-      return constant + linear[0] * a + linear[1] * b + linear[2] * c + quadratic[0] * a * b +
-             quadratic[1] * a * c + quadratic[2] * b * c + cubic * a * b * c;
+      const double c = variables[2] == no_index ? 0. : double(labels[variables[2]]);
+      return linear[0] * a + linear[1] * b + linear[2] * c + quadratic[0] * a * b + quadratic[1] * a * c +
+             quadratic[2] * b * c + cubic * a * b * c;
     }
   };
 
@@ -120,7 +125,7 @@ private:
   // third variable, is submodular once the variables are flipped as m says.
   bool representable(const Term& t, const std::vector<signed char>& m) const
   {
-    const int arity = t.variables[2] == none ? 2 : 3;
+    const int arity = t.variables[2] == no_index ? 2 : 3;
     for(int p = 0; p < (arity == 3 ? 3 : 1); ++p)
     {
       const std::size_t u = t.variables[pairs[p][0]], v = t.variables[pairs[p][1]];
@@ -143,37 +148,38 @@ private:
   {
     const std::size_t n = m_unary.size();
     // The terms of each variable, in the order of the terms.
-    std::vector<std::size_t> first_term(n + 1, 0), adjacent_terms;
+    std::vector<std::size_t> first_term(n + 1, 0);
     for(const Term& t : m_terms)
-      for(std::size_t v : t.variables)
-        if(v != none)
+      for(Index v : t.variables)
+        if(v != no_index)
           ++first_term[v + 1];
     for(std::size_t i = 0; i < n; ++i)
       first_term[i + 1] += first_term[i];
-    adjacent_terms.resize(first_term[n]);
+    std::vector<Index> adjacent_terms(first_term[n]);
     {
       std::vector<std::size_t> fill(first_term.begin(), first_term.end() - 1);
       for(std::size_t ti = 0; ti < m_terms.size(); ++ti)
-        for(std::size_t v : m_terms[ti].variables)
-          if(v != none)
-            adjacent_terms[fill[v]++] = ti;
+        for(Index v : m_terms[ti].variables)
+          if(v != no_index)
+            adjacent_terms[fill[v]++] = Index(ti);
     }
     m_mapping.assign(n, -1);
     std::vector<char> visited(m_terms.size(), 0);
-    std::deque<std::size_t> queue;
+    // Each term enters the queue once: a flat array read from its front.
+    std::vector<Index> queue;
+    queue.reserve(m_terms.size());
     for(std::size_t seed = 0; seed < m_terms.size(); ++seed)
     {
       if(visited[seed])
         continue;
       visited[seed] = 1;
-      queue.push_back(seed);
-      while(!queue.empty())
+      queue.push_back(Index(seed));
+      for(std::size_t front = queue.size() - 1; front < queue.size(); ++front)
       {
-        const std::size_t ti = queue.front();
-        queue.pop_front();
+        const Index ti = queue[front];
         map_term(ti);
-        for(std::size_t v : m_terms[ti].variables)
-          if(v != none)
+        for(Index v : m_terms[ti].variables)
+          if(v != no_index)
             for(std::size_t a = first_term[v]; a < first_term[v + 1]; ++a)
               if(!visited[adjacent_terms[a]])
               {
@@ -194,10 +200,10 @@ private:
   void map_term(std::size_t ti)
   {
     const Term& t = m_terms[ti];
-    std::array<std::size_t, 3> free_vars{};
+    std::array<Index, 3> free_vars{};
     int number_free = 0;
-    for(std::size_t v : t.variables)
-      if(v != none && m_mapping[v] < 0)
+    for(Index v : t.variables)
+      if(v != no_index && m_mapping[v] < 0)
       {
         bool seen = false;
         for(int f = 0; f < number_free; ++f)
@@ -230,30 +236,34 @@ private:
   std::vector<char> cut()
   {
     const std::size_t n = m_unary.size();
-    std::vector<double> unary(n, 0.);                                 // over y
-    // Pairwise coefficients over y, (min, max) of the variables, in the order they come; summed
-    // per pair below, in that same order.
-    std::vector<std::pair<std::pair<std::size_t, std::size_t>, double> > pairwise;
+    std::vector<double> unary(n, 0.); // over y
+    // Pairwise coefficients over y, on (min, max) of the variables, in the order they come.
+    struct Pair { Index i, j; double c; };
+    std::vector<Pair> pairwise;
+    pairwise.reserve(3 * m_terms.size());
     // An auxiliary node w of a reduced cubic term: unary cost `unary` when w = 1, and a
     // (submodular, negative) coefficient `pairwise` on w * y for each of the three variables.
-    struct Aux { std::array<std::size_t, 3> variables; double unary; double pairwise; };
+    struct Aux { std::array<Index, 3> variables; double unary; double pairwise; };
     std::vector<Aux> aux;
 
-    auto add_linear = [&](std::size_t i, double c) {
+    auto add_linear = [&](Index i, double c) {
       // c * x_i with x_i = m ? 1 - y_i : y_i
       if(m_mapping[i]) unary[i] -= c; // the constant part is irrelevant to the cut
       else unary[i] += c;
     };
-    auto add_quadratic = [&](std::size_t i, std::size_t j, double c) {
+    auto add_pair = [&](Index i, Index j, double c) {
+      pairwise.push_back({(std::min)(i, j), (std::max)(i, j), c});
+    };
+    auto add_quadratic = [&](Index i, Index j, double c) {
       if(i == j) { add_linear(i, c); return; }
       // c * x_i * x_j; with x = s + sign * y, s in {0,1}, sign in {+1,-1}
       const double si = m_mapping[i] ? 1. : 0., gi = m_mapping[i] ? -1. : 1.;
       const double sj = m_mapping[j] ? 1. : 0., gj = m_mapping[j] ? -1. : 1.;
       unary[i] += c * gi * sj;
       unary[j] += c * gj * si;
-      pairwise.push_back({{(std::min)(i, j), (std::max)(i, j)}, c * gi * gj});
+      add_pair(i, j, c * gi * gj);
     };
-    auto add_cubic = [&](const std::array<std::size_t, 3>& v, double c) {
+    auto add_cubic = [&](const std::array<Index, 3>& v, double c) {
       // In y, after the mapping, c * x0 x1 x2 is again a cubic in y with coefficient
       // c * g0 g1 g2 plus lower-order terms; expand (s + g y) products.
       std::array<double, 3> s, g;
@@ -271,7 +281,7 @@ private:
       {
         const int a = pairs[p][0], b = pairs[p][1], d = 3 - a - b;
         if(v[a] != v[b])
-          pairwise.push_back({{(std::min)(v[a], v[b]), (std::max)(v[a], v[b])}, c * g[a] * g[b] * s[d]});
+          add_pair(v[a], v[b], c * g[a] * g[b] * s[d]);
         else
           unary[v[a]] += c * g[a] * g[b] * s[d];
       }
@@ -286,9 +296,9 @@ private:
         // cy y0 y1 y2 = cy (y0y1 + y0y2 + y1y2) + min_w [cy w - cy w (y0 + y1 + y2)]
         for(int p = 0; p < 3; ++p)
         {
-          const std::size_t a = v[pairs[p][0]], b = v[pairs[p][1]];
+          const Index a = v[pairs[p][0]], b = v[pairs[p][1]];
           if(a != b)
-            pairwise.push_back({{(std::min)(a, b), (std::max)(a, b)}, cy});
+            add_pair(a, b, cy);
           else
             unary[a] += cy;
         }
@@ -297,14 +307,14 @@ private:
     };
 
     for(std::size_t i = 0; i < n; ++i)
-      add_linear(i, m_unary[i]);
+      add_linear(Index(i), m_unary[i]);
     for(const Term& t : m_terms)
     {
-      const std::size_t i = t.variables[0], j = t.variables[1], k = t.variables[2];
+      const Index i = t.variables[0], j = t.variables[1], k = t.variables[2];
       add_linear(i, t.linear[0]);
       add_linear(j, t.linear[1]);
       add_quadratic(i, j, t.quadratic[0]);
-      if(k != none)
+      if(k != no_index)
       {
         add_linear(k, t.linear[2]);
         add_quadratic(i, k, t.quadratic[1]);
@@ -314,112 +324,128 @@ private:
       }
     }
 
-    std::stable_sort(pairwise.begin(), pairwise.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    // The coefficients of each pair summed, in the order they came: a stable counting sort on the
+    // first variable, then a stable insertion sort on the second within each (short) run.
+    {
+      std::vector<std::size_t> start(n + 1, 0);
+      for(const Pair& p : pairwise)
+        ++start[p.i + 1];
+      for(std::size_t i = 0; i < n; ++i)
+        start[i + 1] += start[i];
+      std::vector<Pair> sorted(pairwise.size());
+      {
+        std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+        for(const Pair& p : pairwise)
+          sorted[fill[p.i]++] = p;
+      }
+      pairwise = std::vector<Pair>();
+      for(std::size_t i = 0; i < n; ++i)
+        for(std::size_t a = start[i] + 1; a < start[i + 1]; ++a)
+          for(std::size_t b = a; b > start[i] && sorted[b - 1].j > sorted[b].j; --b)
+            std::swap(sorted[b - 1], sorted[b]);
+      std::size_t out = 0;
+      for(std::size_t k = 0; k < sorted.size();)
+      {
+        Pair sum = sorted[k];
+        for(++k; k < sorted.size() && sorted[k].i == sum.i && sorted[k].j == sum.j; ++k)
+          sum.c += sorted[k].c;
+        sorted[out++] = sum;
+      }
+      sorted.resize(out);
+      pairwise.swap(sorted);
+    }
+
+    // Current labelling in y: x = 0 for all, so y_i = m_i. Supermodular pairs (coefficient
+    // a > 0) are bounded by linear terms exact at y0; the submodular ones are kept.
     {
       std::size_t out = 0;
-      for(std::size_t k = 0; k < pairwise.size();)
+      for(const Pair& p : pairwise)
       {
-        double sum = 0;
-        const std::pair<std::size_t, std::size_t> key = pairwise[k].first;
-        for(; k < pairwise.size() && pairwise[k].first == key; ++k)
-          sum += pairwise[k].second;
-        pairwise[out++] = {key, sum};
+        const double a = p.c;
+        if(a < 0)
+          pairwise[out++] = p;
+        if(!(a > 0))
+          continue;
+        const bool yi = m_mapping[p.i] != 0, yj = m_mapping[p.j] != 0;
+        if(yi == yj)
+        {
+          unary[p.i] += a / 2; // a yi yj <= a (yi + yj) / 2, exact at (0,0) and (1,1)
+          unary[p.j] += a / 2;
+        }
+        else if(yi)
+          unary[p.j] += a;     // a yi yj <= a yj, exact at yj = 0
+        else
+          unary[p.i] += a;     // a yi yj <= a yi, exact at yi = 0
       }
       pairwise.resize(out);
     }
 
-    // Current labelling in y: x = 0 for all, so y_i = m_i.
-    // Supermodular pairs (coefficient a > 0) are bounded by linear terms exact at y0.
-    std::vector<std::pair<std::pair<std::size_t, std::size_t>, double> > submodular;
-    for(const auto& entry : pairwise)
-    {
-      const std::size_t i = entry.first.first, j = entry.first.second;
-      const double a = entry.second;
-      if(a <= 0)
-      {
-        if(a < 0)
-          submodular.push_back(entry);
-        continue;
-      }
-      const bool yi = m_mapping[i] != 0, yj = m_mapping[j] != 0;
-      if(yi == yj)
-      {
-        unary[i] += a / 2; // a yi yj <= a (yi + yj) / 2, exact at (0,0) and (1,1)
-        unary[j] += a / 2;
-      }
-      else if(yi)
-        unary[j] += a;     // a yi yj <= a yj, exact at yj = 0
-      else
-        unary[i] += a;     // a yi yj <= a yi, exact at yi = 0
-    }
-
-    // The s-t graph: node index = variable, then auxiliary nodes, then s and t. Its arcs are
-    // listed first, each with its reverse, then laid out by tail in a compressed sparse row graph
-    // (each node's arcs in the order they were listed): no allocation per arc.
+    // The s-t graph: node index = variable, then auxiliary nodes, then s and t. A node on the
+    // sink side has label 1. A pairwise a yi yj with a < 0 is a yi + (-a) yi (1 - yj): an arc
+    // j -> i of capacity -a. The arcs, each with its reverse, are enumerated twice: to count each
+    // node's arcs, then to lay them out by tail, each node's in the order enumerated, in the
+    // arrays of a compressed sparse row graph (no list of arcs, no allocation per arc).
     const std::size_t number_of_nodes = n + aux.size() + 2;
-    const std::size_t source = n + aux.size(), sink = source + 1;
-    struct Arc { std::size_t tail, head; double capacity; std::size_t reverse; };
-    std::vector<Arc> arcs;
-    auto add_edge_pair = [&](std::size_t u, std::size_t v, double c) {
-      if(!(c > 0))
-        return;
-      arcs.push_back({u, v, c, arcs.size() + 1});
-      arcs.push_back({v, u, 0., arcs.size() - 1});
-    };
+    CGAL_precondition(number_of_nodes < std::size_t(no_index));
+    const Index source = Index(n + aux.size()), sink = source + 1;
     std::vector<double> node_unary(number_of_nodes, 0.);
     for(std::size_t i = 0; i < n; ++i)
       node_unary[i] = unary[i];
-    // A node on the sink side has label 1. Pairwise a yi yj with a < 0: a yi + (-a) yi (1 - yj),
-    // an edge j -> i of capacity -a.
-    auto add_submodular_pair = [&](std::size_t i, std::size_t j, double a) {
-      node_unary[i] += a;
-      add_edge_pair(j, i, -a);
-    };
-    for(const auto& entry : submodular)
-      add_submodular_pair(entry.first.first, entry.first.second, entry.second);
+    for(const Pair& p : pairwise)
+      node_unary[p.i] += p.c;
     for(std::size_t q = 0; q < aux.size(); ++q)
     {
-      const std::size_t w = n + q;
-      node_unary[w] += aux[q].unary;
-      for(std::size_t v : aux[q].variables)
-        add_submodular_pair(w, v, aux[q].pairwise);
+      node_unary[n + q] += aux[q].unary;
+      for(int a = 0; a < 3; ++a)
+        node_unary[n + q] += aux[q].pairwise; // w y_v = w - w (1 - y_v)
     }
-    for(std::size_t i = 0; i < number_of_nodes - 2; ++i)
-    {
-      const double u = node_unary[i];
-      if(u > 0)
-        add_edge_pair(source, i, u);  // paid when i is on the sink side (label 1)
-      else if(u < 0)
-        add_edge_pair(i, sink, -u);   // paid when i is on the source side (label 0)
-    }
+    unary = std::vector<double>();
+    auto for_each_arc = [&](const auto& arc) { // arc(tail, head, capacity), capacity > 0
+      for(const Pair& p : pairwise)
+        arc(p.j, p.i, -p.c);
+      for(std::size_t q = 0; q < aux.size(); ++q)
+        for(Index v : aux[q].variables)
+          arc(v, Index(n + q), -aux[q].pairwise);
+      for(std::size_t i = 0; i + 2 < number_of_nodes; ++i)
+      {
+        const double u = node_unary[i];
+        if(u > 0)
+          arc(source, Index(i), u); // paid when i is on the sink side (label 1)
+        else if(u < 0)
+          arc(Index(i), sink, -u);  // paid when i is on the source side (label 0)
+      }
+    };
+    std::vector<std::size_t> next(number_of_nodes + 1, 0);
+    for_each_arc([&](Index u, Index v, double) {
+      ++next[u + 1];
+      ++next[v + 1];
+    });
+    for(std::size_t i = 0; i < number_of_nodes; ++i)
+      next[i + 1] += next[i];
+    const std::size_t number_of_arcs = next[number_of_nodes];
+    CGAL_precondition(number_of_arcs < std::size_t(no_index));
 
-    // Counting sort of the arcs by tail, stable.
-    std::vector<std::size_t> position(arcs.size());
-    {
-      std::vector<std::size_t> start(number_of_nodes + 1, 0);
-      for(const Arc& a : arcs)
-        ++start[a.tail + 1];
-      for(std::size_t i = 0; i < number_of_nodes; ++i)
-        start[i + 1] += start[i];
-      for(std::size_t k = 0; k < arcs.size(); ++k)
-        position[k] = start[arcs[k].tail]++;
-    }
-    std::vector<std::pair<std::size_t, std::size_t> > sorted(arcs.size());
-    std::vector<double> capacity(arcs.size()), residual(arcs.size());
-    for(std::size_t k = 0; k < arcs.size(); ++k)
-    {
-      sorted[position[k]] = {arcs[k].tail, arcs[k].head};
-      capacity[position[k]] = arcs[k].capacity;
-    }
-    using Graph = boost::compressed_sparse_row_graph<boost::directedS>;
+    using Graph = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, boost::no_property,
+                                                     boost::no_property, Index, Index>;
     using Arc_descriptor = boost::graph_traits<Graph>::edge_descriptor;
-    using Node_descriptor = boost::graph_traits<Graph>::vertex_descriptor;
+    std::vector<std::pair<Index, Index> > sorted(number_of_arcs);
+    std::vector<double> capacity(number_of_arcs), residual(number_of_arcs);
+    std::vector<Arc_descriptor> reverse(number_of_arcs);
+    for_each_arc([&](Index u, Index v, double c) {
+      const Index pu = Index(next[u]++), pv = Index(next[v]++);
+      sorted[pu] = {u, v};
+      sorted[pv] = {v, u};
+      capacity[pu] = c;
+      capacity[pv] = 0;
+      reverse[pu] = Arc_descriptor(v, pv);
+      reverse[pv] = Arc_descriptor(u, pu);
+    });
+    next = std::vector<std::size_t>();
+    node_unary = std::vector<double>();
+    pairwise = std::vector<Pair>();
+    aux = std::vector<Aux>();
     const Graph g(boost::edges_are_sorted, sorted.begin(), sorted.end(), number_of_nodes);
-    std::vector<Arc_descriptor> reverse(arcs.size());
-    for(std::size_t k = 0; k < arcs.size(); ++k)
-      reverse[position[k]] = Arc_descriptor(Node_descriptor(arcs[k].head), position[arcs[k].reverse]);
-    arcs = std::vector<Arc>();
+    sorted = std::vector<std::pair<Index, Index> >();
     std::vector<Arc_descriptor> predecessor(number_of_nodes);
     std::vector<boost::default_color_type> color(number_of_nodes);
     std::vector<long> distance(number_of_nodes);
@@ -431,8 +457,7 @@ private:
       boost::make_iterator_property_map(reverse.begin(), arc_index),
       boost::make_iterator_property_map(predecessor.begin(), node_index),
       boost::make_iterator_property_map(color.begin(), node_index),
-      boost::make_iterator_property_map(distance.begin(), node_index), node_index, Node_descriptor(source),
-      Node_descriptor(sink));
+      boost::make_iterator_property_map(distance.begin(), node_index), node_index, source, sink);
 
     std::vector<char> labels(n, 0);
     for(std::size_t i = 0; i < n; ++i)

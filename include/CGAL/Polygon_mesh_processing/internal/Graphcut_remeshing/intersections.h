@@ -97,11 +97,19 @@ public:
       if(fan[i] && !m_mesh.is_removed(v))
         fan_pairs(v, query, found);
     });
-    // Triangles that share no vertex: the candidates with a queried triangle.
+    // Triangles that share no vertex: the candidates with a queried triangle, whose boxes overlap
+    // (each box made once: a triangle has a few candidates).
+    m_boxes.resize(nf);
+    for_each_index(nf, [&](std::size_t i) {
+      const Face f(static_cast<Face::size_type>(i));
+      if(!m_mesh.is_removed(f))
+        m_boxes[i] = box(f);
+    });
     collect_by_blocks(m_candidates.size(), out, [&](std::size_t i, std::vector<Face_pair>& found) {
       const Face_pair& p = m_candidates[i];
       if((query[std::size_t(p.first)] || query[std::size_t(p.second)]) &&
-         CGAL::do_overlap(box(p.first), box(p.second)) && intersect(p.first, p.second))
+         CGAL::do_overlap(m_boxes[std::size_t(p.first)], m_boxes[std::size_t(p.second)]) &&
+         intersect(p.first, p.second))
         found.push_back(p);
     });
     // A pair with two common vertices comes from both fans.
@@ -204,19 +212,21 @@ private:
     // Counting sort of (cell, triangle) entries by the hash of the cell.
     std::size_t entries = 0;
     for(Face f : m_mesh.faces())
-      entries += number_of_cells(boxes[std::size_t(f)]);
+      for_each_cell(boxes[std::size_t(f)], [&](const Cell&, unsigned char) { ++entries; });
     std::size_t buckets = 1;
     while(buckets < entries)
       buckets *= 2;
     std::vector<std::size_t> start(buckets + 1, 0);
     for(Face f : m_mesh.faces())
-      for_each_cell(boxes[std::size_t(f)], [&](const Cell& c) { ++start[bucket(c, buckets) + 1]; });
+      for_each_cell(boxes[std::size_t(f)], [&](const Cell& c, unsigned char) { ++start[bucket(c, buckets) + 1]; });
     for(std::size_t i = 0; i < buckets; ++i)
       start[i + 1] += start[i];
-    // Each entry carries its box, so that a bucket is read in one sweep of memory.
+    // Each entry carries its box, so that a bucket is read in one sweep of memory, and the axes on
+    // which its cell is the cell of the box's low corner.
     struct Entry
     {
       Face face;
+      unsigned char low;
       std::array<float, 6> box;
     };
     std::vector<Entry> listed(entries);
@@ -224,25 +234,29 @@ private:
       std::vector<std::size_t> fill(start.begin(), start.end() - 1);
       for(Face f : m_mesh.faces())
       {
-        const Entry entry{f, small_boxes[std::size_t(f)]};
-        for_each_cell(boxes[std::size_t(f)], [&](const Cell& c) { listed[fill[bucket(c, buckets)]++] = entry; });
+        for_each_cell(boxes[std::size_t(f)], [&](const Cell& c, unsigned char low) {
+          listed[fill[bucket(c, buckets)]++] = Entry{f, low, small_boxes[std::size_t(f)]};
+        });
       }
     }
 
-    // The pairs of each bucket, each pair in the bucket of the cell that holds the low corner of
-    // the intersection of its boxes (both boxes overlap that cell, so both are listed there).
+    // The pairs of each bucket, each pair in the cell that holds the low corner of the
+    // intersection of its boxes (both boxes overlap that cell, so both are listed there). The low
+    // corner of the intersection is the largest of the low corners: in a cell both boxes meet, it
+    // lies in that cell when on each axis one of the two boxes starts in it. Entries of another
+    // cell of the same bucket can only give a pair found elsewhere too.
     collect_by_blocks(buckets, m_candidates, [&](std::size_t k, std::vector<Face_pair>& found) {
       for(std::size_t i = start[k]; i < start[k + 1]; ++i)
         for(std::size_t j = i + 1; j < start[k + 1]; ++j)
         {
           const Entry& ei = listed[i];
           const Entry& ej = listed[j];
+          if((ei.low | ej.low) != 7)
+            continue;
           const std::array<float, 6>& a = ei.box;
           const std::array<float, 6>& b = ej.box;
           if(ei.face == ej.face || b[0] > a[3] || a[0] > b[3] || b[1] > a[4] || a[1] > b[4] || b[2] > a[5] ||
              a[2] > b[5])
-            continue;
-          if(bucket(cell_of((std::max)(a[0], b[0]), (std::max)(a[1], b[1]), (std::max)(a[2], b[2])), buckets) != k)
             continue;
           const std::array<Vertex, 3>& ti = m_triangles[std::size_t(ei.face)];
           const std::array<Vertex, 3>& tj = m_triangles[std::size_t(ej.face)];
@@ -265,12 +279,8 @@ private:
     return {{(long long)std::floor(x / m_cell), (long long)std::floor(y / m_cell), (long long)std::floor(z / m_cell)}};
   }
 
-  std::size_t number_of_cells(const CGAL::Bbox_3& b) const
-  {
-    const Cell lo = cell_of(b.xmin(), b.ymin(), b.zmin()), hi = cell_of(b.xmax(), b.ymax(), b.zmax());
-    return std::size_t((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1));
-  }
-
+  // function(c, low) for each cell c the box overlaps; bit a of `low` says whether c is the box's
+  // first cell along axis a.
   template <typename Function>
   void for_each_cell(const CGAL::Bbox_3& b, const Function& function) const
   {
@@ -279,7 +289,7 @@ private:
     for(c[0] = lo[0]; c[0] <= hi[0]; ++c[0])
       for(c[1] = lo[1]; c[1] <= hi[1]; ++c[1])
         for(c[2] = lo[2]; c[2] <= hi[2]; ++c[2])
-          function(c);
+          function(c, static_cast<unsigned char>((c[0] == lo[0]) | (c[1] == lo[1]) << 1 | (c[2] == lo[2]) << 2));
   }
 
   static std::size_t bucket(const Cell& c, std::size_t buckets)
@@ -421,6 +431,7 @@ private:
   std::vector<std::array<Vertex, 3> > m_triangles; // by face, when the list was made
   std::vector<std::array<double, 3> > m_anchor;    // by vertex, where it was then
   std::vector<Face_pair> m_candidates;           // sorted
+  std::vector<CGAL::Bbox_3> m_boxes;              // by face, at the last check
 };
 
 } // namespace Graphcut_remeshing
