@@ -115,7 +115,11 @@ int main(int argc, char** argv)
 
   try
   {
-    const tools::Mesh input = tools::read_mesh(files[0], true);
+    std::vector<std::string> notices;
+    const tools::Mesh input = tools::read_mesh(files[0], true, &notices);
+    if(!quiet)
+      for(const std::string& n : notices)
+        std::cerr << "graphcut_remesh: " << n << '\n';
     tools::Mesh mesh = input;
 
     const auto start = std::chrono::steady_clock::now();
@@ -163,6 +167,11 @@ int main(int argc, char** argv)
   catch(const tools::Input_error& e)
   {
     std::cerr << "graphcut_remesh: " << e.what() << '\n';
+    return EXIT_FAILURE;
+  }
+  catch(const PMP::Graphcut_remeshing_input_error& e)
+  {
+    std::cerr << "graphcut_remesh: " << files[0] << ": " << e.what() << '\n';
     return EXIT_FAILURE;
   }
   catch(const std::exception& e)

@@ -86,7 +86,10 @@ int main(int argc, char** argv)
     std::vector<std::string> titles;
     for(const std::string& f : files)
     {
-      meshes.push_back(tools::read_mesh(f, true));
+      std::vector<std::string> notices;
+      meshes.push_back(tools::read_mesh(f, false, &notices));
+      for(const std::string& n : notices)
+        std::cerr << "mesh_quality: " << n << '\n';
       reports.push_back(PMP::mesh_quality_report(meshes.back()));
       titles.push_back(std::filesystem::path(f).filename().string());
     }

@@ -100,5 +100,47 @@ with tempfile.TemporaryDirectory() as tmp:
     r = run([mesh, missing_out, '--iterations', 'many'])
     check(r.returncode == 1 and not os.path.exists(missing_out), "bad --iterations")
 
+    # Defective inputs: one line naming the defect, exit code 1, no output file.
+    def off(points, faces):
+        return 'OFF\n%d %d 0\n' % (len(points), len(faces)) + ''.join(
+            '%s %s %s\n' % p for p in points) + ''.join(
+            '%d %s\n' % (len(f), ' '.join(str(i) for i in f)) for f in faces)
+    tetra_points = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+    tetra_faces = [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)]
+    defective = {
+        'no faces': (off(tetra_points, []), 'no faces'),
+        'NaN': (off([(0, 0, 0), ('nan', 0, 0), (0, 1, 0), (0, 0, 1)], tetra_faces), 'non-finite'),
+        'infinite': (off([(0, 0, 0), (1, 0, 0), (0, 'inf', 0), (0, 0, 1)], tetra_faces), 'non-finite'),
+        'index out of range': (off(tetra_points, tetra_faces[:3] + [(0, 3, 7)]), 'refers to vertex 7'),
+        'non-manifold edge': (off(tetra_points + [(1, 1, 1)], [(0, 1, 2), (1, 0, 3), (0, 1, 4)]), 'non-manifold'),
+        'non-manifold vertex': (off([(0, 0, 0), (1, 0, 0), (0, 1, 0), (-1, 0, 0), (0, -1, 0)],
+                                    [(0, 1, 2), (0, 3, 4)]), 'non-manifold vertex'),
+        'degenerate face': (off([(0, 0, 0), (1, 0, 0), (2, 0, 0), (0, 1, 0)], [(0, 1, 3), (1, 2, 3), (0, 2, 1)]),
+                            'degenerate'),
+        'repeated vertex': (off(tetra_points, [(0, 2, 2)]), 'repeats vertex'),
+    }
+    for name, (text, expected) in defective.items():
+        path = os.path.join(tmp, 'defective.off')
+        with open(path, 'w') as f:
+            f.write(text)
+        r = run([path, missing_out] + short)
+        lines = r.stderr.strip().splitlines()
+        check(r.returncode == 1 and len(lines) == 1 and expected in r.stderr,
+              "%s: exit %d, stderr %r" % (name, r.returncode, r.stderr))
+        check(not os.path.exists(missing_out), "%s: an output was written" % name)
+
+    # Repairs that lose nothing are made and said: quads triangulated, unused points dropped.
+    cube_points = [(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)]
+    cube_quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    for name, text, expected in (('quads', off(cube_points, cube_quads), '6 faces with more than three sides'),
+                                 ('unused point', off(tetra_points + [(5, 5, 5)], tetra_faces), '1 vertices on no face')):
+        path = os.path.join(tmp, 'repaired.off')
+        with open(path, 'w') as f:
+            f.write(text)
+        r = run([path, out3] + short)
+        check(r.returncode == 0 and expected in r.stderr, "%s: exit %d, stderr %r" % (name, r.returncode, r.stderr))
+        check(os.path.exists(out3), "%s: no output" % name)
+        os.remove(out3) if os.path.exists(out3) else None
+
 print("graphcut_remesh CLI: %d checks, %d failed" % (checks, len(failures)))
 sys.exit(1 if failures else 0)

@@ -5,6 +5,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_GRAPHCUT_ISOTROPIC_REMESHING_H
 
 #include <CGAL/Polygon_mesh_processing/graphcut_remeshing_parameters.h>
+#include <CGAL/Polygon_mesh_processing/graphcut_remeshing_validation.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/normalization.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/remesher.h>
@@ -183,7 +184,10 @@ struct Default_visitor
  *
  * \return the energies before and after each iteration, and counts
  *
- * \pre `CGAL::is_triangle_mesh(tmesh)`
+ * \throws Graphcut_remeshing_input_error when `validate_graphcut_remeshing_input(tmesh, np)`
+ *         finds a defect (no faces, a non-triangle face, a non-finite coordinate, an isolated or
+ *         non-manifold vertex, a degenerate triangle, an invalid halfedge structure); `tmesh` is
+ *         then left untouched
  */
 template <typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -199,7 +203,9 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using edge_descriptor = typename boost::graph_traits<TriangleMesh>::edge_descriptor;
 
-  CGAL_precondition(CGAL::is_triangle_mesh(tmesh));
+  const Graphcut_remeshing_input_validation validation = validate_graphcut_remeshing_input(tmesh, np);
+  if(!validation.is_valid())
+    throw Graphcut_remeshing_input_error(validation);
 
   // Named parameters to plain values.
   auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
@@ -290,7 +296,7 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
       feature_edge[std::size_t(work.edge(wh))] = GR::Tracking_state::constrained_edge;
       user_edge[std::size_t(work.edge(wh))] = 1;
     }
-  std::vector<GR::Vertex_kind> kind = GR::classify_vertices(work, feature_edge, constrained_vertex);
+  std::vector<GR::Vertex_kind> kind = GR::classify_vertices(work, feature_edge, constrained_vertex, sharp_bounds.second);
 
   GR::Graphcut_remesher remesher(work, feature_edge, kind, options);
   Graphcut_remeshing_statistics stats = remesher.run(visitor);

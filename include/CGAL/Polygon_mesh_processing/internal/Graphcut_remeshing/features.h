@@ -74,21 +74,35 @@ enum class Vertex_kind : char
 {
   free_vertex,    // moves on the surface
   feature_vertex, // slides along its feature polyline (one or two feature edges, section 4.2)
-  fixed_vertex    // never moves: corners (three or more feature edges), user constraints
+  fixed_vertex    // never moves: corners (three or more feature edges, or a feature line that
+                  // turns sharply), user constraints
 };
 
+// Beyond the paper's corners (three or more feature edges): a vertex where the border turns by
+// more than `corner_angle` degrees is a corner too. Sliding along the border would cut that turn
+// off and the border would lose its shape (a single triangle would shrink). Sharp feature lines
+// are left to the paper's rule: on coarse organic models they zigzag, and fixing their turns
+// costs quality there.
 template <typename Mesh>
 std::vector<Vertex_kind> classify_vertices(const Mesh& m, const std::vector<char>& feature_edge,
-                                           const std::vector<char>& constrained_vertex)
+                                           const std::vector<char>& constrained_vertex, double corner_angle = 35)
 {
   std::vector<Vertex_kind> kind(m.number_of_vertices(), Vertex_kind::free_vertex);
   for(auto v : m.vertices())
   {
-    int count = 0;
+    int count = 0, border = 0;
+    std::array<Vector_3d, 2> ends;
     if(m.halfedge(v) != Mesh::null_halfedge())
       for(auto h : halfedges_around_target(m.halfedge(v), m))
-        count += feature_edge[std::size_t(m.edge(h))] ? 1 : 0;
-    if(constrained_vertex[std::size_t(v)] || count >= 3 ||
+        if(feature_edge[std::size_t(m.edge(h))])
+        {
+          if(count < 2)
+            ends[count] = to_vector(m.point(m.source(h)));
+          ++count;
+          border += m.is_border(m.edge(h)) ? 1 : 0;
+        }
+    const bool turns = count == 2 && border == 2 && 180 - to_degrees(angle(to_vector(m.point(v)), ends[0], ends[1])) > corner_angle;
+    if(constrained_vertex[std::size_t(v)] || count >= 3 || turns ||
        m.halfedge(v) == Mesh::null_halfedge())
       kind[std::size_t(v)] = Vertex_kind::fixed_vertex;
     else if(count != 0)
