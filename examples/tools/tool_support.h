@@ -137,6 +137,8 @@ inline Mesh read_mesh(const std::string& path, bool triangulate, std::vector<std
   }
   if(polygons.empty())
     throw Input_error(path + ": the mesh has no faces");
+  // Here, not only in the validation below, so that vertices are numbered as in the file (points
+  // on no face are dropped before the mesh is made).
   for(std::size_t i = 0; i < points.size(); ++i)
   {
     const Kernel::Point_3& p = points[i];
