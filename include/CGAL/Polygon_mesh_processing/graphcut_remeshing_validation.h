@@ -12,8 +12,11 @@
 
 #include <cmath>
 #include <cstddef>
+#include <iterator>
+#include <set>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -149,13 +152,23 @@ validate_graphcut_remeshing_input(const TriangleMesh& tmesh, const NamedParamete
       return refuse(Defect::NON_FINITE_COORDINATE, "vertex " + std::to_string(i) + " has a non-finite coordinate");
     ++i;
   }
-  i = 0;
-  for(auto v : vertices(tmesh))
+  // One sweep over the halfedges (is_non_manifold_vertex() sweeps them all for each vertex).
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  std::vector<halfedge_descriptor> pinched;
+  non_manifold_vertices(tmesh, std::back_inserter(pinched));
+  if(!pinched.empty())
   {
-    if(is_non_manifold_vertex(v, tmesh))
-      return refuse(Defect::NON_MANIFOLD_VERTEX,
-                    "vertex " + std::to_string(i) + " is non-manifold (its faces form more than one fan)");
-    ++i;
+    std::set<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> non_manifold;
+    for(halfedge_descriptor h : pinched)
+      non_manifold.insert(target(h, tmesh));
+    i = 0;
+    for(auto v : vertices(tmesh))
+    {
+      if(non_manifold.count(v))
+        return refuse(Defect::NON_MANIFOLD_VERTEX,
+                      "vertex " + std::to_string(i) + " is non-manifold (its faces form more than one fan)");
+      ++i;
+    }
   }
   i = 0;
   for(auto f : faces(tmesh))
