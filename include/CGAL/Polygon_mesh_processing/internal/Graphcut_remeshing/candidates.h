@@ -9,6 +9,8 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -20,8 +22,9 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Graphcut_remeshing {
 
-// The link of a vertex as the segments opposite to it in its incident triangles.
-using Link = std::vector<std::pair<Vector_3d, Vector_3d> >;
+// The link of a vertex as the segments opposite to it in its incident triangles (on the stack for
+// the valences a mesh has: one is made per vertex and candidate round).
+using Link = boost::container::small_vector<std::pair<Vector_3d, Vector_3d>, 12>;
 
 // Smallest distance from x to its one-ring boundary (the ||x_s, x_Ns|| of eq. 5).
 inline double ring_radius(const Vector_3d& x, const Link& link)
@@ -40,12 +43,19 @@ inline Vector_3d angle_based_target(const Vector_3d& x, const Link& link)
   Vector_3d sum = Vector_3d::Zero();
   int count = 0;
   // Around a ring vertex p with ring neighbours q (before) and r (after): p is the end of two
-  // segments, (q, p) and (p, r).
-  for(const auto& in : link)
-    for(const auto& out : link)
+  // segments, (q, p) and (p, r); in a manifold ring only one segment starts at p. Around a vertex
+  // the segments come in order, one way or the other: the two beside (q, p) are looked at first.
+  const std::size_t k = link.size();
+  for(std::size_t i = 0; i < k; ++i)
+  {
+    const auto& in = link[i];
+    auto starts_at_p = [&](std::size_t j) { return link[j].first == in.second; };
+    std::size_t j = starts_at_p((i + k - 1) % k) ? (i + k - 1) % k : (starts_at_p((i + 1) % k) ? (i + 1) % k : 0);
+    while(j < k && !starts_at_p(j))
+      ++j;
+    if(j < k)
     {
-      if(!(in.second == out.first))
-        continue;
+      const auto& out = link[j];
       const Vector_3d& p = in.second;
       const Vector_3d u = in.first - p, w = out.second - p;
       const double lu = u.norm(), lw = w.norm(), lx = (x - p).norm();
@@ -57,6 +67,7 @@ inline Vector_3d angle_based_target(const Vector_3d& x, const Link& link)
       sum += p + lx * bisector.normalized();
       ++count;
     }
+  }
   return count > 0 ? Vector_3d(sum / count) : x;
 }
 

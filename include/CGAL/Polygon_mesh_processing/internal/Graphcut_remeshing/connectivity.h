@@ -19,6 +19,8 @@
 
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -544,8 +546,8 @@ public:
         continue;
       const Vector_3d x = position(v);
       Link link;
-      std::vector<Vector_3d> ring;
-      std::vector<Vector_3d> normals;
+      boost::container::small_vector<Vector_3d, 12> ring;
+      boost::container::small_vector<Vector_3d, 12> normals;
       for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
       {
         const Vector_3d p = position(m_mesh.source(h)), q = position(m_mesh.target(m_mesh.next(h)));

@@ -21,6 +21,8 @@
 #include <CGAL/Random.h>
 #include <CGAL/property_map.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <array>
 #ifdef CGAL_GRAPHCUT_REMESHING_VERBOSE
@@ -499,9 +501,18 @@ private:
   // part of the reference pays for it even when its vertices lie on the reference.
   double triangle_energy(Face f, const Vector_3d& a, const Vector_3d& b, const Vector_3d& c) const
   {
-    return m_options.weights.lambda_shape * shape_energy(a, b, c) +
-           m_options.weights.face_data_weight * m_options.weights.lambda_data *
-             squared_distance((a + b + c) / 3, m_state.face_hint[std::size_t(f)]);
+    return triangle_shape_term(a, b, c) + triangle_data_term(f, a, b, c);
+  }
+
+  double triangle_shape_term(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c) const
+  {
+    return m_options.weights.lambda_shape * shape_energy(a, b, c);
+  }
+
+  double triangle_data_term(Face f, const Vector_3d& a, const Vector_3d& b, const Vector_3d& c) const
+  {
+    return m_options.weights.face_data_weight * m_options.weights.lambda_data *
+           squared_distance((a + b + c) / 3, m_state.face_hint[std::size_t(f)]);
   }
 
   // Beyond the paper: the data term at the midpoint of the i-th feature edge (a, b). Feature
@@ -513,15 +524,15 @@ private:
            squared_distance((a + b) / 2, m_state.edge_hint[std::size_t(m_feature_edges[i])]);
   }
 
-  // The terms of triangle f with its vertex v at x and the others where they are (in the order of
-  // the triangle's vertices, so that the value does not depend on the caller).
-  double triangle_energy(Face f, Vertex v, const Vector_3d& x) const
+  // The corners of triangle f with its vertex v at x and the others where they are, in the order
+  // of the triangle's vertices (so that its terms do not depend on the caller).
+  std::array<Vector_3d, 3> triangle_with(Face f, Vertex v, const Vector_3d& x) const
   {
     const std::array<Vertex, 3> t = face_vertices(f);
     std::array<Vector_3d, 3> p;
     for(int i = 0; i < 3; ++i)
       p[i] = t[i] == v ? x : position(t[i]);
-    return triangle_energy(f, p[0], p[1], p[2]);
+    return p;
   }
 
   // eq. (7) at the current position of v, from the terms kept: local_evidence(v, position(v)).
@@ -588,24 +599,41 @@ private:
 
   // eq. (7): the energy terms that depend on the position x of vertex v. The terms are not
   // negative: once their sum reaches `bound` the rest is not evaluated (a candidate that reaches
-  // the current local evidence is refused whatever the rest adds).
+  // the current local evidence is refused whatever the rest adds). The shape terms come first:
+  // they need no search on the reference.
   //
   // With `record`, the terms of each triangle are also written there, at the index of the
   // triangle's halfedge to v. `hint` is where the search for the data term of v starts.
   double local_evidence(Vertex v, const Vector_3d& x, double bound = std::numeric_limits<double>::infinity(),
                         std::vector<double>* record = nullptr, Face hint = Work_mesh::null_face()) const
   {
-    double u = data_energy(v, x, hint);
+    struct Triangle_term
+    {
+      Halfedge h;
+      std::array<Vector_3d, 3> corners;
+      double shape;
+    };
+    boost::container::small_vector<Triangle_term, 12> triangles;
+    double u = 0;
     for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
       if(!m_mesh.is_border(h))
       {
-        if(!(u < bound))
-          return u;
-        const double term = triangle_energy(m_mesh.face(h), v, x);
-        if(record)
-          (*record)[std::size_t(h)] = term;
-        u += term;
+        const std::array<Vector_3d, 3> p = triangle_with(m_mesh.face(h), v, x);
+        triangles.push_back(Triangle_term{h, p, triangle_shape_term(p[0], p[1], p[2])});
+        u += triangles.back().shape;
       }
+    if(!(u < bound))
+      return u;
+    u += data_energy(v, x, hint);
+    for(const Triangle_term& t : triangles)
+    {
+      if(!(u < bound))
+        return u;
+      const double data = triangle_data_term(m_mesh.face(t.h), t.corners[0], t.corners[1], t.corners[2]);
+      if(record)
+        (*record)[std::size_t(t.h)] = t.shape + data;
+      u += data;
+    }
     if(kind_of(v) == Vertex_kind::feature_vertex)
       for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
       {
@@ -684,7 +712,7 @@ private:
       return false;
     const Vector_3d x = position(v);
     Link link;
-    std::vector<Vector_3d> ring;
+    boost::container::small_vector<Vector_3d, 12> ring;
     for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
     {
       ring.push_back(position(m_mesh.source(h)));
