@@ -8,6 +8,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_REFERENCE_SURFACE_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
@@ -15,6 +16,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <limits>
@@ -342,79 +344,79 @@ private:
 
   // Principal curvatures, directions and normal from a degree-2 jet fitted to the 2-ring (a wider
   // ring where the 2-ring has fewer than the six points a quadric needs), oriented like the
-  // area-weighted normal. Where no quadric can be fitted the frame is flat.
+  // area-weighted normal. Where no quadric can be fitted the frame is flat. Each vertex on its
+  // own: the rings are small, membership is a search in the ring.
   void compute_frames()
+  {
+    m_frames.assign(m_mesh.num_vertices(), Local_frame());
+    for_each_index(m_mesh.num_vertices(), [&](std::size_t i) {
+      const Vertex v(static_cast<typename Vertex::size_type>(i));
+      if(!m_mesh.is_removed(v))
+        compute_frame(v, m_frames[i]);
+    });
+  }
+
+  void compute_frame(Vertex v, Local_frame& f) const
   {
     using K = CGAL::Simple_cartesian<double>;
     using Fitting = CGAL::Monge_via_jet_fitting<K>;
-    m_frames.assign(m_mesh.number_of_vertices(), Local_frame());
-    std::vector<char> seen(m_mesh.number_of_vertices(), 0);
     std::vector<Vertex> ring, frontier, next_frontier;
     std::vector<K::Point_3> points;
-    for(Vertex v : m_mesh.vertices())
+    f.origin = point(v);
+    const Vector_3d n = area_weighted_normal(v);
+    if(n.norm() > 0)
     {
-      Local_frame& f = m_frames[std::size_t(v)];
-      f.origin = point(v);
-      const Vector_3d n = area_weighted_normal(v);
-      if(n.norm() > 0)
-      {
-        f.normal = n;
-        f.d1 = n.unitOrthogonal();
-        f.d2 = n.cross(f.d1);
-      }
-      if(m_mesh.halfedge(v) == Mesh::null_halfedge())
-        continue;
+      f.normal = n;
+      f.d1 = n.unitOrthogonal();
+      f.d2 = n.cross(f.d1);
+    }
+    if(m_mesh.halfedge(v) == Mesh::null_halfedge())
+      return;
 
-      ring.assign(1, v);
-      frontier.assign(1, v);
-      seen[std::size_t(v)] = 1;
-      for(int depth = 0; depth < 4 && !frontier.empty() && (depth < 2 || ring.size() < 6); ++depth)
-      {
-        next_frontier.clear();
-        for(Vertex u : frontier)
-          for(auto h : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+    ring.assign(1, v);
+    frontier.assign(1, v);
+    for(int depth = 0; depth < 4 && !frontier.empty() && (depth < 2 || ring.size() < 6); ++depth)
+    {
+      next_frontier.clear();
+      for(Vertex u : frontier)
+        for(auto h : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+        {
+          const Vertex w = m_mesh.source(h);
+          if(std::find(ring.begin(), ring.end(), w) == ring.end())
           {
-            const Vertex w = m_mesh.source(h);
-            if(!seen[std::size_t(w)])
-            {
-              seen[std::size_t(w)] = 1;
-              ring.push_back(w);
-              next_frontier.push_back(w);
-            }
+            ring.push_back(w);
+            next_frontier.push_back(w);
           }
-        frontier.swap(next_frontier);
-      }
-      for(Vertex u : ring)
-        seen[std::size_t(u)] = 0;
-      if(ring.size() < 6 || !(n.norm() > 0))
-        continue;
+        }
+      frontier.swap(next_frontier);
+    }
+    if(ring.size() < 6 || !(n.norm() > 0))
+      return;
 
-      points.clear();
-      for(Vertex u : ring)
-        points.push_back(m_mesh.point(u));
-      Fitting fitting;
-      typename Fitting::Monge_form form = fitting(points.begin(), points.end(), 2, 2);
-      form.comply_wrt_given_normal(K::Vector_3(n.x(), n.y(), n.z()));
-      const K::Vector_3 d1 = form.maximal_principal_direction(), d2 = form.minimal_principal_direction();
-      const K::Vector_3 normal = form.normal_direction();
-      const double k1 = form.principal_curvatures(0), k2 = form.principal_curvatures(1);
-      if(!std::isfinite(k1) || !std::isfinite(k2))
-        continue;
-      f.normal = Vector_3d(normal.x(), normal.y(), normal.z()).normalized();
-      f.d1 = Vector_3d(d1.x(), d1.y(), d1.z()).normalized();
-      f.d2 = Vector_3d(d2.x(), d2.y(), d2.z()).normalized();
-      // Keep d1 along the curvature of larger magnitude.
-      if(std::abs(k2) > std::abs(k1))
-      {
-        std::swap(f.d1, f.d2);
-        f.k1 = k2;
-        f.k2 = k1;
-      }
-      else
-      {
-        f.k1 = k1;
-        f.k2 = k2;
-      }
+    for(Vertex u : ring)
+      points.push_back(m_mesh.point(u));
+    Fitting fitting;
+    typename Fitting::Monge_form form = fitting(points.begin(), points.end(), 2, 2);
+    form.comply_wrt_given_normal(K::Vector_3(n.x(), n.y(), n.z()));
+    const K::Vector_3 d1 = form.maximal_principal_direction(), d2 = form.minimal_principal_direction();
+    const K::Vector_3 normal = form.normal_direction();
+    const double k1 = form.principal_curvatures(0), k2 = form.principal_curvatures(1);
+    if(!std::isfinite(k1) || !std::isfinite(k2))
+      return;
+    f.normal = Vector_3d(normal.x(), normal.y(), normal.z()).normalized();
+    f.d1 = Vector_3d(d1.x(), d1.y(), d1.z()).normalized();
+    f.d2 = Vector_3d(d2.x(), d2.y(), d2.z()).normalized();
+    // Keep d1 along the curvature of larger magnitude.
+    if(std::abs(k2) > std::abs(k1))
+    {
+      std::swap(f.d1, f.d2);
+      f.k1 = k2;
+      f.k2 = k1;
+    }
+    else
+    {
+      f.k1 = k1;
+      f.k2 = k2;
     }
   }
 

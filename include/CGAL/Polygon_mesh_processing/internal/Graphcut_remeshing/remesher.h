@@ -272,7 +272,7 @@ public:
             m_state.location[std::size_t(moving[i])] = candidate_location[i];
           else if(labels[i] && kind_of(moving[i]) == Vertex_kind::free_vertex)
             m_state.vertex_hint[std::size_t(moving[i])] = candidate_face[i];
-        update_terms(touched);
+        update_terms_after_relocation(touched, proposal_data);
         return moved;
       }
       for(std::size_t i = 0; i < moving.size(); ++i)
@@ -293,8 +293,7 @@ public:
                            double forbidden, Triangle_table& t) const
   {
     const std::array<Vertex, 3> v = face_vertices(f);
-    const Halfedge h = m_mesh.halfedge(f);
-    const std::array<Halfedge, 3> to{{m_mesh.prev(h), h, m_mesh.next(h)}}; // to v[i]
+    const std::array<Halfedge, 3> to = halfedges_to_vertices(f);
     std::array<int, 3> slot{};
     for(int i = 0; i < 3; ++i)
       if(variable[std::size_t(v[i])] != Binary_graph_cut::none)
@@ -465,6 +464,13 @@ private:
 
   std::array<Vertex, 3> face_vertices(Face f) const { return Graphcut_remeshing::face_vertices(m_mesh, f); }
 
+  // The halfedges of f to its vertices, in the order of face_vertices(f).
+  std::array<Halfedge, 3> halfedges_to_vertices(Face f) const
+  {
+    const Halfedge h = m_mesh.halfedge(f);
+    return {{m_mesh.prev(h), h, m_mesh.next(h)}};
+  }
+
   // The feature edges of the working mesh and their slots (splits of sharp edges add some).
   void collect_feature_edges()
   {
@@ -566,16 +572,23 @@ private:
       m_edge_term[i] = current_feature_edge_energy(i);
   }
 
-  void update_terms(const std::vector<char>& moved)
+  // After a relocation, the terms that depend on a vertex with moved[v]. A moved vertex's data
+  // term (`data`, by vertex) and the terms of the triangles where it alone moved were evaluated
+  // at its candidate already, with the same hints; the others are evaluated again.
+  void update_terms_after_relocation(const std::vector<char>& moved, const std::vector<double>& data)
   {
     for_each_face([&](Face f) {
       const std::array<Vertex, 3> t = face_vertices(f);
-      if(moved[std::size_t(t[0])] || moved[std::size_t(t[1])] || moved[std::size_t(t[2])])
+      const int count = moved[std::size_t(t[0])] + moved[std::size_t(t[1])] + moved[std::size_t(t[2])];
+      if(count == 1)
+        m_face_term[std::size_t(f)] =
+          m_proposal_face_term[std::size_t(halfedges_to_vertices(f)[moved[std::size_t(t[0])] ? 0 : (moved[std::size_t(t[1])] ? 1 : 2)])];
+      else if(count > 1)
         m_face_term[std::size_t(f)] = current_triangle_energy(f);
     });
     for_each_vertex([&](Vertex v) {
       if(moved[std::size_t(v)])
-        m_vertex_term[std::size_t(v)] = data_energy(v, position(v));
+        m_vertex_term[std::size_t(v)] = data[std::size_t(v)];
     });
     for(std::size_t i = 0; i < m_feature_edges.size(); ++i)
     {
