@@ -324,25 +324,24 @@ private:
       }
     }
 
-    // The coefficients of each pair summed, in the order they came: a stable counting sort on the
-    // first variable, then a stable insertion sort on the second within each (short) run.
+    // The coefficients of each pair summed, in the order they came: stable counting sorts on the
+    // second variable, then on the first (a radix sort: by first, then second, ties in order).
     {
-      std::vector<std::size_t> start(n + 1, 0);
-      for(const Pair& p : pairwise)
-        ++start[p.i + 1];
-      for(std::size_t i = 0; i < n; ++i)
-        start[i + 1] += start[i];
       std::vector<Pair> sorted(pairwise.size());
-      {
-        std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-        for(const Pair& p : pairwise)
-          sorted[fill[p.i]++] = p;
-      }
+      std::vector<std::size_t> start(n + 1);
+      auto counting_sort = [&](const std::vector<Pair>& from, std::vector<Pair>& to, auto key) {
+        std::fill(start.begin(), start.end(), 0);
+        for(const Pair& p : from)
+          ++start[key(p) + 1];
+        for(std::size_t i = 0; i < n; ++i)
+          start[i + 1] += start[i];
+        for(const Pair& p : from)
+          to[start[key(p)]++] = p;
+      };
+      counting_sort(pairwise, sorted, [](const Pair& p) { return p.j; });
+      counting_sort(sorted, pairwise, [](const Pair& p) { return p.i; });
+      sorted.swap(pairwise);
       pairwise = std::vector<Pair>();
-      for(std::size_t i = 0; i < n; ++i)
-        for(std::size_t a = start[i] + 1; a < start[i + 1]; ++a)
-          for(std::size_t b = a; b > start[i] && sorted[b - 1].j > sorted[b].j; --b)
-            std::swap(sorted[b - 1], sorted[b]);
       std::size_t out = 0;
       for(std::size_t k = 0; k < sorted.size();)
       {

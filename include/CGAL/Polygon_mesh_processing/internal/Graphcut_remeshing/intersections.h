@@ -25,6 +25,10 @@
 
 #include <boost/container/small_vector.hpp>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_sort.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -113,7 +117,7 @@ public:
         found.push_back(p);
     });
     // A pair with two common vertices comes from both fans.
-    std::sort(out.begin(), out.end());
+    sort_pairs(out);
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
   }
@@ -173,13 +177,15 @@ private:
       m_anchor[std::size_t(v)] = {{p.x(), p.y(), p.z()}};
     }
     std::vector<CGAL::Bbox_3> boxes(nf);
+    for_each_face([&](Face f) {
+      m_triangles[std::size_t(f)] = face_vertices(m_mesh, f);
+      boxes[std::size_t(f)] = box(f);
+    });
     double extent = 0;
     std::size_t count = 0;
     for(Face f : m_mesh.faces())
     {
-      m_triangles[std::size_t(f)] = face_vertices(m_mesh, f);
-      const CGAL::Bbox_3 b = box(f);
-      boxes[std::size_t(f)] = b;
+      const CGAL::Bbox_3& b = boxes[std::size_t(f)];
       extent += (std::max)({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
       ++count;
     }
@@ -191,54 +197,68 @@ private:
     // A quarter of a triangle: the vertices of a relocation move less than that in most
     // iterations, and grown boxes still meet few triangles beyond their neighbours.
     m_margin = 0.25 * extent;
-    // Grown, then in single precision (rounded outwards) for a compact grid; the cells are those
-    // of the single-precision boxes.
-    const float inf = std::numeric_limits<float>::infinity();
-    std::vector<std::array<float, 6> > small_boxes(nf);
-    for(Face f : m_mesh.faces())
-    {
-      CGAL::Bbox_3& b = boxes[std::size_t(f)];
-      std::array<float, 6>& s = small_boxes[std::size_t(f)];
-      s = {{std::nextafter(float(b.xmin() - m_margin), -inf), std::nextafter(float(b.ymin() - m_margin), -inf),
-            std::nextafter(float(b.zmin() - m_margin), -inf), std::nextafter(float(b.xmax() + m_margin), inf),
-            std::nextafter(float(b.ymax() + m_margin), inf), std::nextafter(float(b.zmax() + m_margin), inf)}};
-      b = CGAL::Bbox_3(s[0], s[1], s[2], s[3], s[4], s[5]);
-    }
     // About the size of a grown box: a cell then holds a few triangles, a triangle a few cells.
     m_cell = extent + 2 * m_margin;
     if(!(m_cell > 0))
       m_cell = 1;
-
-    // Counting sort of (cell, triangle) entries by the hash of the cell.
-    std::size_t entries = 0;
-    for(Face f : m_mesh.faces())
-      for_each_cell(boxes[std::size_t(f)], [&](const Cell&, unsigned char) { ++entries; });
-    std::size_t buckets = 1;
-    while(buckets < entries)
-      buckets *= 2;
-    std::vector<std::size_t> start(buckets + 1, 0);
-    for(Face f : m_mesh.faces())
-      for_each_cell(boxes[std::size_t(f)], [&](const Cell& c, unsigned char) { ++start[bucket(c, buckets) + 1]; });
-    for(std::size_t i = 0; i < buckets; ++i)
-      start[i + 1] += start[i];
-    // Each entry carries its box, so that a bucket is read in one sweep of memory, and the axes on
-    // which its cell is the cell of the box's low corner.
+    // Grown, then in single precision (rounded outwards) for a compact grid; the cells are those
+    // of the single-precision boxes. Each entry carries its box, so that a bucket is read in one
+    // sweep of memory, and the axes on which its cell is the cell of the box's low corner.
     struct Entry
     {
       Face face;
       unsigned char low;
       std::array<float, 6> box;
     };
+    std::vector<std::array<float, 6> > small_boxes(nf);
+    std::vector<std::size_t> offset(nf + 1, 0);
+    for_each_face([&](Face f) {
+      CGAL::Bbox_3& b = boxes[std::size_t(f)];
+      std::array<float, 6>& s = small_boxes[std::size_t(f)];
+      const float inf = std::numeric_limits<float>::infinity();
+      s = {{std::nextafter(float(b.xmin() - m_margin), -inf), std::nextafter(float(b.ymin() - m_margin), -inf),
+            std::nextafter(float(b.zmin() - m_margin), -inf), std::nextafter(float(b.xmax() + m_margin), inf),
+            std::nextafter(float(b.ymax() + m_margin), inf), std::nextafter(float(b.zmax() + m_margin), inf)}};
+      b = CGAL::Bbox_3(s[0], s[1], s[2], s[3], s[4], s[5]);
+      std::size_t cells = 0;
+      for_each_cell(b, [&](const Cell&, unsigned char) { ++cells; });
+      offset[std::size_t(f) + 1] = cells;
+    });
+    for(std::size_t i = 0; i < nf; ++i)
+      offset[i + 1] += offset[i];
+    const std::size_t entries = offset[nf];
+    std::size_t buckets = 1;
+    while(buckets < entries)
+      buckets *= 2;
+    // The cells of each triangle, in order, at its offset; then a counting sort by bucket.
+    struct Cell_entry
+    {
+      std::uint32_t bucket; // fewer buckets than twice the entries, which are fewer than 2^31
+      Face face;
+      unsigned char low;
+    };
+    std::vector<Cell_entry> unsorted(entries);
+    for_each_face([&](Face f) {
+      std::size_t k = offset[std::size_t(f)];
+      for_each_cell(boxes[std::size_t(f)], [&](const Cell& c, unsigned char low) {
+        unsorted[k++] = Cell_entry{std::uint32_t(bucket(c, buckets)), f, low};
+      });
+    });
+    offset = std::vector<std::size_t>();
+    boxes = std::vector<CGAL::Bbox_3>();
+    std::vector<std::size_t> start(buckets + 1, 0);
+    for(const Cell_entry& e : unsorted)
+      ++start[e.bucket + 1];
+    for(std::size_t i = 0; i < buckets; ++i)
+      start[i + 1] += start[i];
     std::vector<Entry> listed(entries);
     {
       std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-      for(Face f : m_mesh.faces())
-      {
-        for_each_cell(boxes[std::size_t(f)], [&](const Cell& c, unsigned char low) {
-          listed[fill[bucket(c, buckets)]++] = Entry{f, low, small_boxes[std::size_t(f)]};
-        });
-      }
+      for(const Cell_entry& e : unsorted)
+        listed[fill[e.bucket]++] = Entry{e.face, e.low, small_boxes[std::size_t(e.face)]};
     }
+    unsorted = std::vector<Cell_entry>();
+    small_boxes = std::vector<std::array<float, 6> >();
 
     // The pairs of each bucket, each pair in the cell that holds the low corner of the
     // intersection of its boxes (both boxes overlap that cell, so both are listed there). The low
@@ -269,9 +289,29 @@ private:
     });
     // Two cells may share a bucket, and a triangle be listed there twice: a pair can be found
     // more than once.
-    std::sort(m_candidates.begin(), m_candidates.end());
+    sort_pairs(m_candidates);
     m_candidates.erase(std::unique(m_candidates.begin(), m_candidates.end()), m_candidates.end());
     m_candidates.shrink_to_fit();
+  }
+
+  // function(f) for each face, in parallel.
+  template <typename Function>
+  void for_each_face(const Function& function) const
+  {
+    for_each_index(m_mesh.num_faces(), [&](std::size_t i) {
+      const Face f(static_cast<Face::size_type>(i));
+      if(!m_mesh.is_removed(f))
+        function(f);
+    });
+  }
+
+  static void sort_pairs(std::vector<Face_pair>& pairs)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::parallel_sort(pairs.begin(), pairs.end());
+#else
+    std::sort(pairs.begin(), pairs.end());
+#endif
   }
 
   Cell cell_of(double x, double y, double z) const
