@@ -586,7 +586,7 @@ TEST(Connectivity_pass, RelaxationKeepsOnlyMovesThatDoNotRaiseTheLocalEnergy)
     // Every move raises the distance to the starting positions: nothing moves.
     Pass_setup s(m);
     const Work start = s.mesh;
-    const std::size_t moved = s.optimizer_with_features([&start](Work::Vertex_index u, const GR::Vector_3d& x) {
+    const std::size_t moved = s.optimizer_with_features([&start](Work::Vertex_index u, const GR::Vector_3d& x, double) {
       return (x - GR::to_vector(start.point(u))).squaredNorm();
     }).relax();
     EXPECT_EQ(moved, 0u);
@@ -597,7 +597,7 @@ TEST(Connectivity_pass, RelaxationKeepsOnlyMovesThatDoNotRaiseTheLocalEnergy)
     // An energy that only the pushed vertex's way back lowers: only it moves.
     Pass_setup s(m);
     const GR::Vector_3d home = GR::to_vector(to_work(make_equilateral_patch(9, 1.0)).point(v));
-    const std::size_t moved = s.optimizer_with_features([&](Work::Vertex_index u, const GR::Vector_3d& x) {
+    const std::size_t moved = s.optimizer_with_features([&](Work::Vertex_index u, const GR::Vector_3d& x, double) {
       return u == v ? (x - home).squaredNorm() : (x - s.point(u)).squaredNorm();
     }).relax();
     EXPECT_EQ(moved, 1u);

@@ -43,6 +43,9 @@ public:
 
   std::size_t number_of_variables() const { return m_unary.size(); }
 
+  // Room for this many pairwise and triple terms.
+  void reserve(std::size_t number_of_terms) { m_terms.reserve(number_of_terms); }
+
   // Energy e0 if variable i is 0, e1 if it is 1.
   void add_unary(std::size_t i, double e0, double e1)
   {

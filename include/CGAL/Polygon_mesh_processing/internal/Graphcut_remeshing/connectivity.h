@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <functional>
+#include <limits>
 #include <queue>
 #include <tuple>
 #include <utility>
@@ -122,7 +123,9 @@ public:
   // The least growth of an angle that counts as an improvement (0.01 degree).
   static constexpr double min_angle_margin = 0.01 * pi / 180;
 
-  using Local_energy = std::function<double(Vertex, const Vector_3d&)>;
+  // local_energy(v, x, bound): the energy, or once it is known to reach `bound`, a value between
+  // `bound` and the energy (the rest need not be evaluated).
+  using Local_energy = std::function<double(Vertex, const Vector_3d&, double)>;
 
   // `polylines`, the reference's feature polylines, lets long sharp edges be split (none are
   // without it); `local_energy(v, x)`, the terms of eq. (1) that depend on the position x of v
@@ -556,7 +559,8 @@ public:
         normals.push_back(area_vector(x, q, p));
       }
       const Vector_3d normal = m_reference.frame(m_state.closest[std::size_t(v)]).normal;
-      const double energy_here = m_local_energy ? m_local_energy(v, x) : 0;
+      const double energy_here =
+        m_local_energy ? m_local_energy(v, x, std::numeric_limits<double>::infinity()) : 0;
       auto try_move = [&](const Vector_3d& target) {
         const Vector_3d y = project(x + tangential(target - x, normal), v);
         for(std::size_t k = 0; k < link.size(); ++k)
@@ -565,7 +569,8 @@ public:
         // Beyond the paper: a move that raises the local energy is not kept. Plain smoothing
         // undoes the fit of the relocation where the surface is curved (on fandisk it raised
         // the RMS distance by a third).
-        if(m_local_energy && !(m_local_energy(v, y) <= energy_here))
+        if(m_local_energy &&
+           !(m_local_energy(v, y, std::nextafter(energy_here, std::numeric_limits<double>::infinity())) <= energy_here))
           return false;
         m_mesh.point(v) = Work_kernel::Point_3(y.x(), y.y(), y.z());
         return true;

@@ -333,6 +333,7 @@ public:
     // energy, so the cut, which never does worse than keeping everything, never picks it.
     const double forbidden = 1e3 * (energy() + 1);
     Binary_graph_cut cut(moving.size());
+    cut.reserve(m_mesh.number_of_faces() + m_feature_edges.size());
     for(std::size_t i = 0; i < moving.size(); ++i)
       cut.add_unary(i, m_vertex_term[std::size_t(moving[i])], excluded[i] ? forbidden : candidate_data[i]);
 
@@ -413,7 +414,7 @@ public:
           if(b.contains(position(v)))
             m_state.frozen[std::size_t(v)] = 1;
       Connectivity_optimizer optimizer(m_mesh, m_reference, m_state, m_sizing, &m_polylines,
-                                       [this](Vertex v, const Vector_3d& x) { return local_evidence(v, x); });
+                                       [this](Vertex v, const Vector_3d& x, double bound) { return local_evidence(v, x, bound); });
       const Connectivity_counts counts = optimizer.run();
       m_intersection_frozen.resize(m_mesh.num_vertices(), 0);
       collect_feature_edges();
