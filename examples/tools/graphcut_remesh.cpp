@@ -8,13 +8,22 @@
 
 #include <CGAL/Polygon_mesh_processing/graphcut_isotropic_remeshing.h>
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
+
+#ifdef _WIN32
+#include <io.h>
+#else
+#include <unistd.h>
+#endif
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace GP = PMP::graphcut_parameters;
@@ -25,8 +34,10 @@ namespace {
 const char* const usage =
   "usage: graphcut_remesh INPUT OUTPUT [options]\n"
   "\n"
-  "Remeshes the triangle mesh INPUT (OFF, OBJ, PLY or STL) into nearly equilateral triangles that\n"
-  "stay close to the input surface, writes OUTPUT and prints the quality before and after.\n"
+  "Remeshes the triangle mesh INPUT into nearly equilateral triangles that stay close to the input\n"
+  "surface, writes OUTPUT and prints the quality before and after. Both files are OFF, OBJ, PLY or\n"
+  "STL, by their extension; PLY and STL are written in binary. On a terminal, a progress bar is\n"
+  "shown on stderr.\n"
   "\n"
   "  --iterations N          non-greedy relocation iterations (default 150)\n"
   "  --greedy-iterations N   final greedy iterations (default 20)\n"
@@ -34,10 +45,96 @@ const char* const usage =
   "  --face-data-weight X    weight of the data term at triangle centroids, relative to\n"
   "                          lambda-data (default 0.05)\n"
   "  --seed N                random seed; same input and seed, same output (default 0)\n"
-  "  --no-connectivity       relocate vertices only, never change the connectivity\n"
-  "  --quiet                 print nothing but errors\n"
+  "  --no-connectivity       relocate vertices only, never change the connectivity (default:\n"
+  "                          the connectivity is optimised)\n"
+  "  --quiet                 print nothing but errors, no progress bar (default: off)\n"
   "  --json FILE             write the quality figures, distances, time and energies as JSON\n"
-  "  --help                  print this help\n";
+  "                          (default: no JSON)\n"
+  "  --help                  print this help and exit (default: off)\n";
+
+// The formats write_polygon_mesh() writes, by extension (it also lowers the case).
+bool is_writable_mesh_file(const std::string& path)
+{
+  const std::string::size_type dot = path.rfind('.');
+  if(dot == std::string::npos)
+    return false;
+  std::string ext = path.substr(dot + 1);
+  for(char& c : ext)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl";
+}
+
+bool stderr_is_terminal()
+{
+#ifdef _WIN32
+  return _isatty(_fileno(stderr)) != 0;
+#else
+  return isatty(STDERR_FILENO) != 0;
+#endif
+}
+
+// One line on a terminal, redrawn after each iteration: phase, iteration over both phases, energy
+// and the time left at the pace so far. Only for a person watching: never written to a pipe or a
+// file, where it would be noise in a log.
+class Progress_bar
+{
+public:
+  Progress_bar(std::size_t relocation_iterations, std::size_t greedy_iterations)
+    : m_relocation(relocation_iterations), m_total(relocation_iterations + greedy_iterations),
+      m_start(std::chrono::steady_clock::now())
+  {
+    draw("preparing", 0, std::string());
+  }
+
+  ~Progress_bar() { clear(); }
+
+  bool operator()(const PMP::Graphcut_remeshing_progress& p)
+  {
+    const bool greedy = p.phase == PMP::Graphcut_remeshing_progress::GREEDY_FITTING;
+    const std::size_t done = (greedy ? m_relocation : 0) + p.iteration;
+    char energy[48];
+    std::snprintf(energy, sizeof(energy), "energy %.6g", p.energy);
+    draw(greedy ? "greedy fitting" : "relocation", done, energy);
+    return true;
+  }
+
+  // Rubs the line out, so that what follows starts on a clean line.
+  void clear()
+  {
+    if(m_drawn)
+      std::fputs("\r\033[K", stderr);
+    std::fflush(stderr);
+    m_drawn = false;
+  }
+
+private:
+  void draw(const char* phase, std::size_t done, const std::string& energy)
+  {
+    const int width = 24;
+    const std::size_t total = (std::max)(m_total, std::size_t(1));
+    const int filled = int(double(width) * double((std::min)(done, total)) / double(total));
+    std::string bar(std::size_t(filled), '#');
+    bar.resize(std::size_t(width), '.');
+    std::string eta = "ETA --:--";
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+    if(done > 0 && done <= total)
+    {
+      const long left = std::lround(elapsed / double(done) * double(total - done));
+      char text[32];
+      std::snprintf(text, sizeof(text), "ETA %ld:%02ld", left / 60, left % 60);
+      eta = text;
+    }
+    // \033[K clears what a longer previous line left on the right.
+    std::fprintf(stderr, "\r%-14s [%s] %zu/%zu  %s%s%s\033[K", phase, bar.c_str(), done, m_total, energy.c_str(),
+                 energy.empty() ? "" : "  ", eta.c_str());
+    std::fflush(stderr);
+    m_drawn = true;
+  }
+
+  std::size_t m_relocation, m_total;
+  std::chrono::steady_clock::time_point m_start;
+  bool m_drawn = false;
+};
 
 template <typename T>
 bool parse_number(const std::string& text, T& value)
@@ -112,6 +209,12 @@ int main(int argc, char** argv)
     std::cerr << "graphcut_remesh: expected INPUT and OUTPUT (see --help)\n" << usage;
     return EXIT_FAILURE;
   }
+  // Before the work, not after: a remeshing can take minutes.
+  if(!is_writable_mesh_file(files[1]))
+  {
+    std::cerr << "graphcut_remesh: " << files[1] << ": cannot write this format (OFF, OBJ, PLY or STL expected)\n";
+    return EXIT_FAILURE;
+  }
 
   try
   {
@@ -123,10 +226,20 @@ int main(int argc, char** argv)
     tools::Mesh mesh = input;
 
     const auto start = std::chrono::steady_clock::now();
-    const PMP::Graphcut_remeshing_statistics stats = PMP::graphcut_isotropic_remeshing(
-      mesh, GP::combine(CGAL::parameters::number_of_iterations(iterations).random_seed(seed),
-                        GP::number_of_greedy_iterations(greedy_iterations), GP::lambda_data(lambda_data),
-                        GP::face_data_weight(face_data_weight), GP::do_connectivity_optimization(connectivity)));
+    const auto parameters =
+      GP::combine(CGAL::parameters::number_of_iterations(iterations).random_seed(seed),
+                  GP::number_of_greedy_iterations(greedy_iterations), GP::lambda_data(lambda_data),
+                  GP::face_data_weight(face_data_weight), GP::do_connectivity_optimization(connectivity));
+    PMP::Graphcut_remeshing_statistics stats;
+    if(!quiet && stderr_is_terminal())
+    {
+      Progress_bar bar(iterations, greedy_iterations);
+      // The visitor is copied: it refers to the bar, which clears its line when it goes.
+      stats = PMP::graphcut_isotropic_remeshing(
+        mesh, GP::combine(parameters, GP::visitor([&bar](const PMP::Graphcut_remeshing_progress& p) { return bar(p); })));
+    }
+    else
+      stats = PMP::graphcut_isotropic_remeshing(mesh, parameters);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     if(!CGAL::IO::write_polygon_mesh(files[1], mesh, CGAL::parameters::stream_precision(17)))

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 the Graphcut_remeshing developers.
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Drives `graphcut_remesh` as a user would: its JSON report, its repeatability, its options and
-its refusals.
+"""Drives `graphcut_remesh` as a user would: its JSON report, its repeatability, its options, its
+help, its refusals, its file formats and its progress bar on a terminal.
 
 usage: test_graphcut_remesh_cli.py GRAPHCUT_REMESH DATA_DIR
 """
@@ -11,6 +11,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import threading
 
 failures = []
 checks = 0
@@ -80,15 +81,44 @@ with tempfile.TemporaryDirectory() as tmp:
     check(all(b <= a * (1 + 1e-12) for a, b in zip(j['energy'], j['energy'][1:])), "energy rose")
 
     r = run(['--help'])
-    check(r.returncode == 0, "--help exit code")
+    check(r.returncode == 0 and r.stderr == '', "--help exit code %d, stderr %r" % (r.returncode, r.stderr))
     for option in ('--seed', '--json', '--iterations', '--greedy-iterations', '--lambda-data',
-                   '--no-connectivity', '--quiet'):
+                   '--face-data-weight', '--no-connectivity', '--quiet', '--help'):
         check(option in r.stdout, "--help does not document %s" % option)
+    for fmt in ('OFF', 'OBJ', 'PLY', 'STL'):
+        check(fmt in r.stdout, "--help does not name the %s format" % fmt)
+    # Every option with its default: an option's text runs from its line to the next option's.
+    help_options = {}
+    for line in r.stdout.splitlines():
+        if line.startswith('  --'):
+            name = line.split()[0]
+            help_options[name] = line
+        elif help_options and line.startswith('    '):
+            help_options[name] += ' ' + line.strip()
+    check(len(help_options) >= 9, "--help lists %d options" % len(help_options))
+    for name, text in help_options.items():
+        check('default' in text, "--help gives no default for %s: %r" % (name, text))
+    for name, default in (('--seed', 'default 0'), ('--iterations', 'default 150'),
+                          ('--greedy-iterations', 'default 20'), ('--json', 'default: no JSON')):
+        check(default in help_options.get(name, ''), "--help: %s should say %r" % (name, default))
 
     # Refusals: exit code 1, no output file.
     missing_out = os.path.join(tmp, 'never.off')
     r = run([mesh])
-    check(r.returncode == 1 and 'usage' in r.stderr, "missing OUTPUT: %d %r" % (r.returncode, r.stderr))
+    check(r.returncode == 1 and 'expected INPUT and OUTPUT' in r.stderr and
+          'usage: graphcut_remesh INPUT OUTPUT' in r.stderr and r.stdout == '',
+          "missing OUTPUT: %d %r %r" % (r.returncode, r.stdout, r.stderr))
+    r = run([mesh, '--quiet'] + short)
+    check(r.returncode == 1 and 'usage: graphcut_remesh INPUT OUTPUT' in r.stderr,
+          "missing OUTPUT after options: %d %r" % (r.returncode, r.stderr))
+    r = run([])
+    check(r.returncode == 1 and 'usage: graphcut_remesh' in r.stderr, "no arguments: %d" % r.returncode)
+    # An output format that cannot be written is refused before the work, with one line.
+    unwritable = os.path.join(tmp, 'never.xyz')
+    r = run([mesh, unwritable] + short)
+    check(r.returncode == 1 and len(r.stderr.strip().splitlines()) == 1 and 'OFF, OBJ, PLY or STL' in r.stderr
+          and r.stdout == '', "unwritable format: %d %r" % (r.returncode, r.stderr))
+    check(not os.path.exists(unwritable), "an output was written in an unknown format")
     garbage = os.path.join(tmp, 'garbage.off')
     with open(garbage, 'w') as f:
         f.write('not a mesh\n')
@@ -141,6 +171,82 @@ with tempfile.TemporaryDirectory() as tmp:
         check(r.returncode == 0 and expected in r.stderr, "%s: exit %d, stderr %r" % (name, r.returncode, r.stderr))
         check(os.path.exists(out3), "%s: no output" % name)
         os.remove(out3) if os.path.exists(out3) else None
+
+    # Formats: a chain of remeshings through OBJ, PLY, STL and back to OFF. Each file is written in
+    # its format, read back as the next input, and holds the mesh written (the JSON figures of one
+    # step's output are those of the next step's input).
+    tiny = ['--iterations', '2', '--greedy-iterations', '1']
+    chain = [mesh] + [os.path.join(tmp, 'chain.' + ext) for ext in ('obj', 'ply', 'stl', 'off', 'OBJ')]
+    previous = None
+    for source, target in zip(chain, chain[1:]):
+        ext = os.path.splitext(target)[1].lower()
+        r = run([source, target, '--quiet', '--json', report] + tiny)
+        check(r.returncode == 0 and os.path.exists(target), "%s -> %s: exit %d %r" % (
+            os.path.basename(source), os.path.basename(target), r.returncode, r.stderr))
+        if r.returncode != 0 or not os.path.exists(target):
+            break
+        with open(target, 'rb') as f:
+            head = f.read(200)
+        if ext == '.obj':
+            check(b'\nv ' in head or head.startswith(b'v '), "%s is not OBJ: %r" % (target, head[:60]))
+        elif ext == '.ply':
+            check(head.startswith(b'ply\n') and b'binary_little_endian' in head and b'property double x' in head,
+                  "%s is not a binary PLY of doubles: %r" % (target, head[:80]))
+        elif ext == '.stl':
+            # Binary STL: an 80-byte header, the triangle count, 50 bytes a triangle.
+            size = os.path.getsize(target)
+            count = int.from_bytes(head[80:84], 'little')
+            check(size == 84 + 50 * count, "%s is not a binary STL (%d bytes, %d triangles)" % (target, size, count))
+        elif ext == '.off':
+            check(head.startswith(b'OFF'), "%s is not OFF: %r" % (target, head[:20]))
+        with open(report) as f:
+            j = json.load(f)
+        if previous is not None:
+            check(j['input']['vertices'] == previous['vertices'] and j['input']['faces'] == previous['faces'],
+                  "%s read back with %d/%d vertices/faces, written with %d/%d" % (
+                      os.path.basename(source), j['input']['vertices'], j['input']['faces'],
+                      previous['vertices'], previous['faces']))
+            # Doubles survive OFF, OBJ and PLY; STL holds floats.
+            tolerance = 1e-3 if source.endswith('.stl') else 1e-6
+            for key in ('mean_min_angle', 'mean_max_angle'):
+                check(abs(j['input'][key] - previous[key]) < tolerance, "%s: %s %r, written %r" % (
+                    os.path.basename(source), key, j['input'][key], previous[key]))
+        previous = j['output']
+
+    # The progress bar: on stderr when it is a terminal, never in a pipe or with --quiet.
+    r = run([mesh, out2] + short)
+    check(r.returncode == 0 and '\r' not in r.stderr and r.stderr == '', "piped stderr got %r" % r.stderr[:200])
+    try:
+        import pty
+    except ImportError:
+        pty = None
+    if pty is not None:
+        def run_on_terminal(args):
+            master, slave = pty.openpty()
+            received = []
+
+            def drain():
+                while True:
+                    try:
+                        data = os.read(master, 4096)
+                    except OSError:
+                        return
+                    if not data:
+                        return
+                    received.append(data)
+            reader = threading.Thread(target=drain)
+            reader.start()
+            p = subprocess.run([tool] + args, stdout=subprocess.PIPE, stderr=slave, timeout=600)
+            os.close(slave)
+            reader.join(10)
+            os.close(master)
+            return p.returncode, b''.join(received).decode(errors='replace')
+        code, err = run_on_terminal([mesh, out2] + short)
+        check(code == 0 and '\r' in err and 'relocation' in err and 'greedy fitting' in err and
+              '15/15' in err and 'energy' in err and 'ETA' in err, "no progress bar on a terminal: %r" % err[:300])
+        check(err.endswith('\r\x1b[K'), "the progress bar does not clear its line: %r" % err[-40:])
+        code, err = run_on_terminal([mesh, out2, '--quiet'] + short)
+        check(code == 0 and err == '', "--quiet on a terminal printed %r" % err[:200])
 
 print("graphcut_remesh CLI: %d checks, %d failed" % (checks, len(failures)))
 sys.exit(1 if failures else 0)

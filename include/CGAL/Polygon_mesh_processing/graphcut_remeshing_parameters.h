@@ -110,27 +110,105 @@ namespace graphcut_parameters {
   }
 /// \endcond
 
-/// weight of the shape term of eq. (1); default `1`
+/*!
+ * sets `lambda_shape`, the weight of the shape term of eq. (1) (circumradius over shortest
+ * edge of each triangle). Default `1`.
+ *
+ * \tparam T a number type convertible to `double`
+ * \param value the weight
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(lambda_shape)
-/// weight of the data term of eq. (1), for a mesh scaled into the unit box; default `1e7`
+/*!
+ * sets `lambda_data`, the weight of the data term of eq. (1) (approximate squared distance of
+ * each vertex to the input surface), for the mesh scaled into the unit box the method works in.
+ * Default `1e7`.
+ *
+ * \tparam T a number type convertible to `double`
+ * \param value the weight
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(lambda_data)
-/// weight of the data term at triangle centroids, relative to `lambda_data`; default `0.05`
+/*!
+ * sets `face_data_weight`, beyond the paper: the weight, relative to `lambda_data`, of a data
+ * term at each triangle's centroid, which keeps triangles from cutting chords through curved parts
+ * of the input. `0` gives the paper's energy. Default `0.05`.
+ *
+ * \tparam T a number type convertible to `double`
+ * \param value the relative weight
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(face_data_weight)
-/// number of greedy (gradient) iterations after the relocation phase; default `20`
+/*!
+ * sets `number_of_greedy_iterations`, the number of iterations of the final greedy phase, whose
+ * candidates follow the energy gradient. Default `20`.
+ *
+ * \tparam T an integral type convertible to `std::size_t`
+ * \param value the number of iterations
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(number_of_greedy_iterations)
-/// number of relocation iterations between two connectivity passes; default `5`
+/*!
+ * sets `connectivity_period`: the connectivity is optimised after every this many iterations of
+ * the first, non-greedy phase; `0` never does. Default `5`.
+ *
+ * \tparam T an integral type convertible to `std::size_t`
+ * \param value the period, in iterations
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(connectivity_period)
-/// `std::pair<double, double>`: the dihedral angles (degrees) of eq. (8); default `(20, 35)`
+/*!
+ * sets `sharp_angle_bounds`, the dihedral angles theta_false and theta_true (degrees) of the
+ * sharp-edge hysteresis of eq. (8). Default `(20, 35)`.
+ *
+ * \tparam T `std::pair<double, double>`
+ * \param value the lower and upper angle
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(sharp_angle_bounds)
-/// T(1) of the cooling schedule of eq. (5); default `10`
+/*!
+ * sets `initial_temperature`, T(1) of the cooling schedule of the freedom sphere of eq. (5).
+ * Default `10`.
+ *
+ * \tparam T a number type convertible to `double`
+ * \param value the temperature
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(initial_temperature)
-/// K of the cooling schedule T(i) = T(1) K^(i-1); default `0.95`
+/*!
+ * sets `cooling_factor`, K of the cooling schedule T(i) = T(1) K^(i-1). Default `0.95`.
+ *
+ * \tparam T a number type convertible to `double`
+ * \param value the factor, in (0, 1]
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(cooling_factor)
-/// the factor gamma of the smoothing candidates' displacements; default `0.06`
+/*!
+ * sets `smoothing_step`, the factor gamma of the displacements of the smoothing candidates.
+ * Default `0.06`.
+ *
+ * \tparam T a number type convertible to `double`
+ * \param value the factor
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(smoothing_step)
-/// a visitor called after each iteration, see `graphcut_isotropic_remeshing()`
+/*!
+ * sets `visitor`, called after each iteration with a `Graphcut_remeshing_progress`; returning
+ * `false` stops the run and leaves a valid mesh. Default: a visitor that never stops.
+ *
+ * \tparam T a callable `bool(const Graphcut_remeshing_progress&)`
+ * \param value the visitor, copied
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(visitor)
-/// `bool`: whether to run the connectivity optimisation of section 3; default `true`
+/*!
+ * sets `do_connectivity_optimization`: whether to run the connectivity optimisation of section 3
+ * of the paper; with `false` the connectivity of the mesh is kept. Default `true`.
+ *
+ * \tparam T `bool`
+ * \param value whether to change the connectivity
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(do_connectivity_optimization)
 
 #undef CGAL_GRAPHCUT_REMESHING_PARAMETER

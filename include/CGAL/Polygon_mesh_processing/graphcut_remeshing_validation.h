@@ -51,7 +51,8 @@ struct Graphcut_remeshing_input_validation
   /// one line that says what is wrong and where (elements are numbered in the order of the
   /// mesh's ranges, from 0); empty when there is no defect
   std::string reason;
-  /// whether the mesh can be remeshed
+  /// tells whether the mesh can be remeshed
+  /// \return `true` when no defect was found
   bool is_valid() const { return defect == Graphcut_remeshing_input_defect::NONE; }
 };
 
@@ -64,11 +65,13 @@ struct Graphcut_remeshing_input_validation
 class Graphcut_remeshing_input_error : public std::invalid_argument
 {
 public:
-  /// from a validation that found a defect
+  /// makes the exception of a validation that found a defect
+  /// \param validation the answer of `validate_graphcut_remeshing_input()`, whose reason becomes `what()`
   explicit Graphcut_remeshing_input_error(const Graphcut_remeshing_input_validation& validation)
     : std::invalid_argument(validation.reason), m_defect(validation.defect)
   {}
-  /// the defect found
+  /// tells which defect was found
+  /// \return the defect found
   Graphcut_remeshing_input_defect defect() const { return m_defect; }
 
 private:
@@ -88,6 +91,9 @@ private:
  *
  * @tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `HalfedgeListGraph`
  * @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * @param tmesh the triangle mesh to check
+ * @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
  *
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{vertex_point_map}
