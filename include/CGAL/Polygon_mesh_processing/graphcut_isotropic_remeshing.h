@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -72,7 +73,8 @@ struct Default_visitor
  * vertices adapts to the local curvature but stays of the order of the input's. When the connectivity changes,
  * `tmesh` is rebuilt: its elements are replaced, and the constrained maps are updated.
  *
- * @tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+ * @tparam TriangleMesh a model of `MutableFaceGraph`, `FaceListGraph`, `VertexListGraph` and
+ *         `EdgeListGraph` (the mesh is rebuilt when its connectivity changes)
  * @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters", which may
  *         chain \cgal's and the package's with `graphcut_parameters::combine()`
  *
@@ -300,6 +302,13 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
 
   GR::Graphcut_remesher remesher(work, feature_edge, kind, options);
   Graphcut_remeshing_statistics stats = remesher.run(visitor);
+#ifndef CGAL_NO_POSTCONDITIONS
+  {
+    // Debug builds: what the method promises, after every run, cancelled or not.
+    const std::string broken = remesher.broken_guarantee();
+    CGAL_postcondition_msg(broken.empty(), broken.c_str());
+  }
+#endif
 
   if(stats.number_of_flips + stats.number_of_splits + stats.number_of_collapses +
        stats.number_of_vertex_splits == 0)

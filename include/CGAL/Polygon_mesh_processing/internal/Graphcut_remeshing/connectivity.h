@@ -13,6 +13,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/candidates.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
@@ -199,7 +200,7 @@ public:
   std::size_t flip_edges()
   {
     std::size_t done = 0;
-    run_queue([&](Edge e) { return flip_gain(e); },
+    run_queue([&](Edge e) { return flip_gain(e); }, [&](Edge e) { return flip_gain(e); },
               [&](Edge e) {
                 const Halfedge h = m_mesh.halfedge(e);
                 std::vector<Vertex> touched{{m_mesh.source(h), m_mesh.target(h),
@@ -259,6 +260,11 @@ public:
     Vector_3d p;
     Location on_feature;
     run_queue([&](Edge e) { return split_gain(e, p, on_feature); },
+              [&](Edge e) {
+                Vector_3d q;
+                Location l;
+                return split_gain(e, q, l);
+              },
               [&](Edge e) {
                 const Halfedge h = m_mesh.halfedge(e);
                 const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
@@ -359,6 +365,10 @@ public:
     std::size_t done = 0;
     Vector_3d p;
     run_queue([&](Edge e) { return collapse_gain(e, p); },
+              [&](Edge e) {
+                Vector_3d q;
+                return collapse_gain(e, q);
+              },
               [&](Edge e) {
                 const Vertex v = CGAL::Euler::collapse_edge(e, m_mesh);
                 m_mesh.point(v) = Work_kernel::Point_3(p.x(), p.y(), p.z());
@@ -685,9 +695,10 @@ private:
   // A priority queue of edges by gain, best first: an entry is stale once its edge has been
   // pushed again, and the gain of the top entry is computed anew (an operation may have changed
   // the valence of a vertex opposite the edge) before `apply`, which may use what `gain` found.
-  // `apply` returns the vertices whose edges must be looked at again.
-  template <typename Gain, typename Apply>
-  void run_queue(Gain gain, Apply apply)
+  // `apply` returns the vertices whose edges must be looked at again. `initial_gain`, the same
+  // gain without what `apply` uses, gives the first gains of all edges in parallel.
+  template <typename Gain, typename Initial_gain, typename Apply>
+  void run_queue(Gain gain, Initial_gain initial_gain, Apply apply)
   {
     struct Entry
     {
@@ -701,16 +712,24 @@ private:
     };
     std::vector<std::size_t> stamp(m_mesh.num_edges(), 0);
     std::priority_queue<Entry> queue;
-    auto push = [&](Edge e) {
+    auto push_gain = [&](Edge e, double g) {
       if(stamp.size() <= std::size_t(e))
         stamp.resize(m_mesh.num_edges(), 0);
       ++stamp[std::size_t(e)];
-      const double g = gain(e);
       if(g > 0)
         queue.push(Entry{g, e, stamp[std::size_t(e)]});
     };
-    for(Edge e : m_mesh.edges())
-      push(e);
+    auto push = [&](Edge e) { push_gain(e, gain(e)); };
+    {
+      std::vector<double> first(m_mesh.num_edges(), 0);
+      for_each_index(first.size(), [&](std::size_t i) {
+        const Edge e(static_cast<Edge::size_type>(i));
+        if(!m_mesh.is_removed(e))
+          first[i] = initial_gain(e);
+      });
+      for(Edge e : m_mesh.edges())
+        push_gain(e, first[std::size_t(e)]);
+    }
     // Every operation improves its criterion, but over a whole queue that is no proof of an end:
     // a bound on the number of operations is.
     const std::size_t budget = 4 * m_mesh.number_of_edges() + 16;

@@ -13,6 +13,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/connectivity.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/guarantees.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/intersections.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
@@ -32,6 +33,7 @@
 #include <cstddef>
 #include <iterator>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -396,6 +398,26 @@ public:
   }
 
   const Reference_surface<Work_mesh>& reference() const { return m_reference; }
+
+  // The first guarantee the working mesh breaks (guarantees.h), or an empty string; also no
+  // intersecting pair of triangles the input did not have.
+  std::string broken_guarantee()
+  {
+    std::vector<Vertex> fixed;
+    std::vector<Vector_3d> fixed_point;
+    for(Vertex v : m_reference_mesh.vertices())
+      if(m_reference_kind[std::size_t(v)] == Vertex_kind::fixed_vertex)
+      {
+        fixed.push_back(v);
+        fixed_point.push_back(m_reference.point(v));
+      }
+    const std::string broken =
+      Graphcut_remeshing::broken_guarantee(m_mesh, topology_summary(m_reference_mesh), fixed, fixed_point);
+    if(!broken.empty())
+      return broken;
+    m_intersections.invalidate();
+    return new_self_intersections().empty() ? std::string() : std::string("two triangles intersect that did not");
+  }
 
   // Section 3 once: local changes then relaxation. Should they make the mesh self-intersect, the
   // pass is undone and tried again with the region around the new intersections left alone, in
