@@ -246,6 +246,18 @@ private:
     });
     offset = std::vector<std::size_t>();
     boxes = std::vector<CGAL::Bbox_3>();
+    // By low-cell axes first, so that each bucket lists its entries by them (a radix sort).
+    {
+      std::array<std::size_t, 9> by_low{};
+      for(const Cell_entry& e : unsorted)
+        ++by_low[e.low + 1];
+      for(int m = 0; m < 8; ++m)
+        by_low[m + 1] += by_low[m];
+      std::vector<Cell_entry> sorted(entries);
+      for(const Cell_entry& e : unsorted)
+        sorted[by_low[e.low]++] = e;
+      unsorted.swap(sorted);
+    }
     std::vector<std::size_t> start(buckets + 1, 0);
     for(const Cell_entry& e : unsorted)
       ++start[e.bucket + 1];
@@ -264,28 +276,36 @@ private:
     // intersection of its boxes (both boxes overlap that cell, so both are listed there). The low
     // corner of the intersection is the largest of the low corners: in a cell both boxes meet, it
     // lies in that cell when on each axis one of the two boxes starts in it. Entries of another
-    // cell of the same bucket can only give a pair found elsewhere too.
+    // cell of the same bucket can only give a pair found elsewhere too. The entries of a bucket
+    // come by their low-cell axes: only the groups whose axes cover all three are paired.
+    auto consider = [&](const Entry& ei, const Entry& ej, std::vector<Face_pair>& found) {
+      const std::array<float, 6>& a = ei.box;
+      const std::array<float, 6>& b = ej.box;
+      if(ei.face == ej.face || b[0] > a[3] || a[0] > b[3] || b[1] > a[4] || a[1] > b[4] || b[2] > a[5] || a[2] > b[5])
+        return;
+      const std::array<Vertex, 3>& ti = m_triangles[std::size_t(ei.face)];
+      const std::array<Vertex, 3>& tj = m_triangles[std::size_t(ej.face)];
+      bool common = false;
+      for(Vertex u : ti)
+        common = common || u == tj[0] || u == tj[1] || u == tj[2];
+      if(!common)
+        found.push_back(ei.face < ej.face ? Face_pair(ei.face, ej.face) : Face_pair(ej.face, ei.face));
+    };
     collect_by_blocks(buckets, m_candidates, [&](std::size_t k, std::vector<Face_pair>& found) {
-      for(std::size_t i = start[k]; i < start[k + 1]; ++i)
-        for(std::size_t j = i + 1; j < start[k + 1]; ++j)
-        {
-          const Entry& ei = listed[i];
-          const Entry& ej = listed[j];
-          if((ei.low | ej.low) != 7)
-            continue;
-          const std::array<float, 6>& a = ei.box;
-          const std::array<float, 6>& b = ej.box;
-          if(ei.face == ej.face || b[0] > a[3] || a[0] > b[3] || b[1] > a[4] || a[1] > b[4] || b[2] > a[5] ||
-             a[2] > b[5])
-            continue;
-          const std::array<Vertex, 3>& ti = m_triangles[std::size_t(ei.face)];
-          const std::array<Vertex, 3>& tj = m_triangles[std::size_t(ej.face)];
-          bool common = false;
-          for(Vertex u : ti)
-            common = common || u == tj[0] || u == tj[1] || u == tj[2];
-          if(!common)
-            found.push_back(ei.face < ej.face ? Face_pair(ei.face, ej.face) : Face_pair(ej.face, ei.face));
-        }
+      std::array<std::size_t, 9> group; // the entries of low-cell axes m: [group[m], group[m + 1])
+      for(std::size_t m = 0, i = start[k]; m < 8; ++m)
+      {
+        group[m] = i;
+        while(i < start[k + 1] && listed[i].low == m)
+          ++i;
+      }
+      group[8] = start[k + 1];
+      for(int ga = 0; ga < 8; ++ga)
+        for(int gb = ga; gb < 8; ++gb)
+          if((ga | gb) == 7)
+            for(std::size_t i = group[ga]; i < group[ga + 1]; ++i)
+              for(std::size_t j = (ga == gb ? i + 1 : group[gb]); j < group[gb + 1]; ++j)
+                consider(listed[i], listed[j], found);
     });
     // Two cells may share a bucket, and a triangle be listed there twice: a pair can be found
     // more than once.
