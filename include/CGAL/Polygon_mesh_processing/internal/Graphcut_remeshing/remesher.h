@@ -128,6 +128,7 @@ public:
         m_state.location[std::size_t(v)] = m_polylines.at_vertex(v);
     }
     compute_terms();
+    m_untracked.assign(n, 1);
   }
 
   Vertex_kind kind_of(Vertex v) const { return m_state.kind[std::size_t(v)]; }
@@ -171,6 +172,7 @@ public:
         {
           connectivity_pass(stats);
           compute_terms();
+          m_untracked.assign(m_mesh.num_vertices(), 1); // new triangles, relaxed vertices
           stats.connectivity_passes.push_back(stats.number_of_iterations);
         }
         stats.energies.push_back(energy());
@@ -275,6 +277,8 @@ public:
           else if(labels[i] && kind_of(moving[i]) == Vertex_kind::free_vertex)
             m_state.vertex_hint[std::size_t(moving[i])] = candidate_face[i];
         update_terms_after_relocation(touched, proposal_data);
+        for(std::size_t i = 0; i < moving.size(); ++i)
+          m_untracked[std::size_t(moving[i])] |= labels[i];
         return moved;
       }
       for(std::size_t i = 0; i < moving.size(); ++i)
@@ -682,10 +686,14 @@ private:
 
   // Section 2.1's tracking: the closest reference vertex y_s0 by local search, and the nearest
   // reference triangles of vertices and centroids (caching where the descent ends does not change
-  // any term at the current positions).
+  // any term at the current positions). Both searches end where they start when they start where
+  // they last ended: only the vertices moved since, and the elements with one, are searched.
   void update_tracking()
   {
+    auto untracked = [&](Vertex v) { return m_untracked[std::size_t(v)] != 0; };
     for_each_vertex([&](Vertex v) {
+      if(!untracked(v))
+        return;
       if(kind_of(v) == Vertex_kind::feature_vertex)
       {
         // On its polyline: the reference elements come with its place there.
@@ -702,15 +710,18 @@ private:
     });
     for_each_face([&](Face f) {
       const std::array<Vertex, 3> t = face_vertices(f);
-      m_reference.closest_point((position(t[0]) + position(t[1]) + position(t[2])) / 3,
-                                m_state.face_hint[std::size_t(f)]);
+      if(untracked(t[0]) || untracked(t[1]) || untracked(t[2]))
+        m_reference.closest_point((position(t[0]) + position(t[1]) + position(t[2])) / 3,
+                                  m_state.face_hint[std::size_t(f)]);
     });
     for(std::size_t i = 0; i < m_feature_edges.size(); ++i)
     {
       const Halfedge h = m_mesh.halfedge(m_feature_edges[i]);
-      m_reference.closest_point((position(m_mesh.source(h)) + position(m_mesh.target(h))) / 2,
-                                m_state.edge_hint[std::size_t(m_feature_edges[i])]);
+      if(untracked(m_mesh.source(h)) || untracked(m_mesh.target(h)))
+        m_reference.closest_point((position(m_mesh.source(h)) + position(m_mesh.target(h))) / 2,
+                                  m_state.edge_hint[std::size_t(m_feature_edges[i])]);
     }
+    std::fill(m_untracked.begin(), m_untracked.end(), 0);
   }
 
   // function(v) for every vertex, function(f) for every face, as independent items.
@@ -879,6 +890,7 @@ private:
   Tracking_state m_state;            // kinds, y_s0 (its frame gives the tangent plane and rho), hints
   Sizing m_sizing;
   std::vector<char> m_intersection_frozen; // by vertex: on a face the input made intersect
+  std::vector<char> m_untracked;           // by vertex: moved since the last tracking
   std::vector<Box> m_keep_out;             // regions where connectivity changes made intersections
   std::vector<Edge> m_feature_edges; // the feature edges of the working mesh
   std::vector<std::size_t> m_feature_edge_slot; // by edge index: position in m_feature_edges
