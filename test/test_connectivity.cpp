@@ -413,28 +413,36 @@ TEST(Connectivity_pass, CollapsesStayAwayFromFeaturesAndCurvedParts)
 // A vertex of valence 10 in the middle of a disc: its ring of 10 vertices of valence 5, then a
 // border ring of 10 vertices of valence 4. One vertex split makes two vertices of valence 7 and
 // brings two ring vertices to 6.
+// A flat disc: a centre of valence n, a ring of n vertices, and an outer ring of n between them;
+// the ring's angular steps vary by up to `unevenness` of the regular one.
+Work fan_disc(std::size_t n, double scale, double unevenness = 0)
+{
+  std::vector<Point> points{Point(0, 0, 0)};
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    auto angle = [&](std::size_t i) { return 2 * pi / double(n) * (double(i) + unevenness * std::sin(3.0 * double(i % n))); };
+    const double a = angle(k), b = (a + angle(k + 1)) / 2;
+    points.emplace_back(scale * std::cos(a), scale * std::sin(a), 0);
+    points.emplace_back(2 * scale * std::cos(b), 2 * scale * std::sin(b), 0);
+  }
+  auto inner = [n](std::size_t k) { return 1 + 2 * (k % n); };
+  auto outer = [n](std::size_t k) { return 2 + 2 * (k % n); };
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    triangles.push_back({{0, inner(k), inner(k + 1)}});
+    triangles.push_back({{inner(k), outer(k), inner(k + 1)}});
+    triangles.push_back({{inner(k + 1), outer(k), outer(k + 1)}});
+  }
+  return to_work(mesh_from_soup(points, triangles));
+}
+
 TEST(Connectivity_pass, VertexSplitLowersTheValenceDeviation)
 {
   for(double scale : {1e-3, 1.0, 1e3})
   {
-    std::vector<Point> points{Point(0, 0, 0)};
-    std::vector<std::array<std::size_t, 3> > triangles;
     const std::size_t n = 10;
-    for(std::size_t k = 0; k < n; ++k)
-    {
-      const double a = 2 * pi * double(k) / double(n), b = a + pi / double(n);
-      points.emplace_back(scale * std::cos(a), scale * std::sin(a), 0);
-      points.emplace_back(2 * scale * std::cos(b), 2 * scale * std::sin(b), 0);
-    }
-    auto inner = [n](std::size_t k) { return 1 + 2 * (k % n); };
-    auto outer = [n](std::size_t k) { return 2 + 2 * (k % n); };
-    for(std::size_t k = 0; k < n; ++k)
-    {
-      triangles.push_back({{0, inner(k), inner(k + 1)}});
-      triangles.push_back({{inner(k), outer(k), inner(k + 1)}});
-      triangles.push_back({{inner(k + 1), outer(k), outer(k + 1)}});
-    }
-    Pass_setup s(to_work(mesh_from_soup(points, triangles)));
+    Pass_setup s(fan_disc(n, scale));
     const Work before = s.mesh;
     const int deviation = valence_deviation(s.mesh);
     const std::string name = "disc at scale " + std::to_string(scale);
@@ -452,6 +460,31 @@ TEST(Connectivity_pass, VertexSplitLowersTheValenceDeviation)
         EXPECT_NE(s.state.vertex_hint[std::size_t(v)], Work::null_face()) << name << ": not bound to the reference";
       }
     EXPECT_EQ(split_halves, 2u) << name;
+  }
+}
+
+// Above valence 12 a vertex is split into near-halves: every split into sides of valence 6 or
+// more lowers the deviation alike, and trying them all cost valence^4.
+TEST(Connectivity_pass, HighValenceIsSplitIntoNearHalves)
+{
+  for(std::size_t n : {13, 20, 40, 96})
+  {
+    // Uneven: on a regular fan the worst new triangle is a little worse than the fan's own, and
+    // the split is refused.
+    Pass_setup s(fan_disc(n, 1.0, 0.4));
+    const Work before = s.mesh;
+    const std::string name = "fan of " + std::to_string(n);
+    EXPECT_EQ(s.optimizer().split_vertices(), 1u) << name;
+    expect_pass_guarantees(s, before, name);
+    // The two new vertices, inside the inner ring, share its n edges and the two triangles
+    // between them.
+    std::vector<std::size_t> halves;
+    for(auto v : s.mesh.vertices())
+      if(GR::to_vector(s.mesh.point(v)).norm() < 0.9)
+        halves.push_back(s.mesh.degree(v));
+    ASSERT_EQ(halves.size(), 2u) << name;
+    EXPECT_EQ(halves[0] + halves[1], n + 4) << name;
+    EXPECT_LE((std::max)(halves[0], halves[1]), (n + 1) / 2 + 3) << name;
   }
 }
 

@@ -123,6 +123,14 @@ public:
   static constexpr double flip_angle_floor = 25 * pi / 180;
   // The least growth of an angle that counts as an improvement (0.01 degree).
   static constexpr double min_angle_margin = 0.01 * pi / 180;
+  // Beyond the paper: no operation and no relaxation step turns a triangle by more than 60
+  // degrees (this cosine) from the surface it replaces. Where the sampling is fine enough for the
+  // shape none needs to; more folds a thin triangle along a crease or a stretched part, where the
+  // reference's normal alone can be either side's (found by a randomized test on stretched boxes
+  // and tori, where a single flip or move turned triangles by 70 to 85 degrees).
+  static constexpr double min_turn_cosine = 0.5;
+  // The valence up to which a vertex split tries every way to cut the ring in two.
+  static constexpr std::size_t max_exhaustive_split = 12;
 
   // local_energy(v, x, bound): the energy, or once it is known to reach `bound`, a value between
   // `bound` and the energy (the rest need not be evaluated).
@@ -173,7 +181,8 @@ public:
       return 0;
     const Vector_3d pa = position(a), pb = position(b), pc = position(c), pd = position(d);
     // (a, b, c) and (b, a, d) become (a, d, c) and (d, b, c).
-    if(!acceptable(pa, pd, pc, a) || !acceptable(pd, pb, pc, b))
+    const Vector_3d quad = area_vector(pa, pb, pc) + area_vector(pb, pa, pd);
+    if(!acceptable(pa, pd, pc, a, quad) || !acceptable(pd, pb, pc, b, quad))
       return 0;
     // The new edge must not leave the reference more than the old one did.
     const double before = distance_to_reference((pa + pb) / 2, a);
@@ -245,8 +254,9 @@ public:
     else
       new_point = project((pa + pb) / 2, a);
     const Vector_3d& p = new_point;
-    if(!acceptable(pa, p, pc, a) || !acceptable(p, pb, pc, b) || !acceptable(pb, p, pd, b) ||
-       !acceptable(p, pa, pd, a))
+    const Vector_3d abc = area_vector(pa, pb, pc), bad = area_vector(pb, pa, pd);
+    if(!acceptable(pa, p, pc, a, abc) || !acceptable(p, pb, pc, b, abc) || !acceptable(pb, p, pd, b, bad) ||
+       !acceptable(p, pa, pd, a, bad))
       return 0;
     const double old_q = (std::min)(split_quality(pa, pb, pc), split_quality(pb, pa, pd));
     const double new_q = (std::min)({split_quality(pa, p, pc), split_quality(p, pb, pc),
@@ -344,7 +354,7 @@ public:
           const Vertex p = m_mesh.source(g), q = m_mesh.target(m_mesh.next(g));
           if(p == a || p == b || q == a || q == b)
             continue; // one of the two triangles that disappear
-          if(!acceptable(x, position(q), position(p), u))
+          if(!acceptable(x, position(q), position(p), u, area_vector(position(u), position(q), position(p))))
           {
             ok = false;
             break;
@@ -413,10 +423,18 @@ public:
         return false;
     }
     const Vector_3d x = position(v);
+    Vector_3d fan = Vector_3d::Zero();
+    for(std::size_t k = 0; k < n; ++k)
+      fan += area_vector(x, position(ring[k]), position(ring[(k + 1) % n]));
     bool found = false;
     double best_angle = 0;
+    // Every split of a high valence into two sides of valence 6 or more changes the deviation
+    // alike, so none could be pruned and a fan of n triangles cost n^4 (36 s for a cone of 192);
+    // above 12 only the near-halves are tried, which also leave the lowest valences.
+    const std::size_t first_span = n <= max_exhaustive_split ? 3 : n / 2 - 1;
+    const std::size_t last_span = n <= max_exhaustive_split ? n - 3 : (n + 1) / 2 + 1;
     for(std::size_t i = 0; i < n; ++i)
-      for(std::size_t span = 3; span + 3 <= n; ++span)
+      for(std::size_t span = first_span; span <= last_span; ++span)
       {
         const std::size_t j = (i + span) % n;
         const int change = std::abs(int(span) + 2 - 6) + std::abs(int(n - span) + 2 - 6) -
@@ -440,7 +458,7 @@ public:
           double smallest = pi;
           bool ok = true;
           auto check = [&](const Vector_3d& u, const Vector_3d& w, const Vector_3d& z) {
-            ok = ok && acceptable(u, w, z, v);
+            ok = ok && acceptable(u, w, z, v, fan);
             if(ok)
               smallest = (std::min)(smallest, smallest_angle(u, w, z));
           };
@@ -572,9 +590,11 @@ public:
       const double energy_here =
         m_local_energy ? m_local_energy(v, x, std::numeric_limits<double>::infinity()) : 0;
       auto try_move = [&](const Vector_3d& target) {
-        const Vector_3d y = project(x + tangential(target - x, normal), v);
+        Face hint = m_state.vertex_hint[std::size_t(v)];
+        const Vector_3d y = m_reference.closest_point(x + tangential(target - x, normal), hint);
         for(std::size_t k = 0; k < link.size(); ++k)
-          if(!is_acceptable_triangle(y, link[k].first, link[k].second, normals[k]))
+          if(!is_acceptable_triangle(y, link[k].first, link[k].second, normals[k], min_turn_cosine) ||
+             !is_acceptable_triangle(y, link[k].first, link[k].second, m_reference.normal(hint)))
             return false;
         // Beyond the paper: a move that raises the local energy is not kept. Plain smoothing
         // undoes the fit of the relocation where the surface is curved (on fandisk it raised
@@ -642,10 +662,15 @@ private:
     return std::abs(d + delta - target) - std::abs(d - target);
   }
 
-  // A triangle an operation may create: not degenerate, not turned over against the reference
-  // (its normal where the triangle's centroid is closest to it, searched from `near`'s triangle).
-  bool acceptable(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c, Vertex near) const
+  // A triangle an operation may create in place of triangles of area vector `replaced`: not
+  // degenerate, not turned by more than 60 degrees from them, not turned over against the
+  // reference (its normal where the triangle's centroid is closest to it, searched from `near`'s
+  // triangle).
+  bool acceptable(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c, Vertex near,
+                  const Vector_3d& replaced) const
   {
+    if(!is_acceptable_triangle(a, b, c, replaced, min_turn_cosine))
+      return false;
     Face hint = m_state.vertex_hint[std::size_t(near)];
     m_reference.closest_point((a + b + c) / 3, hint);
     return is_acceptable_triangle(a, b, c, m_reference.normal(hint));

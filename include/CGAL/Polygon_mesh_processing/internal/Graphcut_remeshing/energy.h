@@ -74,16 +74,17 @@ inline double squared_distance_approximation(const Vector_3d& x, const Local_fra
   return w1 / (w1 + 1) * x1 * x1 + w2 / (w2 + 1) * x2 * x2 + x3 * x3;
 }
 
-// A triangle that a move may not create: degenerate, or turned over against its current normal.
+// A triangle that a move may not create: degenerate, or turned over against its current normal
+// (turned by more than the angle whose cosine is `min_cosine`, a right angle by default).
 inline bool is_acceptable_triangle(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c,
-                                   const Vector_3d& current_area_vector)
+                                   const Vector_3d& current_area_vector, double min_cosine = 0)
 {
   const Vector_3d n = area_vector(a, b, c);
   const double longest2 = (std::max)({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
   // A relative area of 1e-12 is a shape energy above 1e11: nothing an optimiser should produce.
   if(!(n.norm() > 1e-12 * longest2))
     return false;
-  return n.dot(current_area_vector) > 0;
+  return n.dot(current_area_vector) > min_cosine * n.norm() * current_area_vector.norm();
 }
 
 } // namespace Graphcut_remeshing
