@@ -10,6 +10,7 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/graphcut_isotropic_remeshing.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/connectivity.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/guarantees.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/intersections.h>
 #include <CGAL/Polygon_mesh_processing/mesh_quality_report.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -543,6 +544,32 @@ TEST(Connectivity_pass, LongEdgesBetweenObtuseTrianglesAreSplit)
 
 // Section 3.2: relaxation improves the triangles and never turns one over, even next to a vertex
 // pushed almost onto its ring's border.
+// The debug-build postcondition sees a fold: an interior vertex of a flat patch pushed past its
+// neighbour turns triangles over against theirs (120 degrees or more), unless the edges are sharp
+// or the input had as many folds.
+TEST(Guarantees, AFoldOffTheSharpEdgesIsABrokenGuarantee)
+{
+  for(double push : {1.5, 2.5})
+  {
+    const Work flat = to_work(make_equilateral_patch(9, 1.0));
+    Work m = flat;
+    const Work::Vertex_index v(40), w(41);
+    const GR::Vector_3d p = GR::to_vector(m.point(v)) + push * (GR::to_vector(m.point(w)) - GR::to_vector(m.point(v)));
+    m.point(v) = GR::Work_kernel::Point_3(p.x(), p.y(), p.z());
+    const std::string name = "pushed " + std::to_string(push);
+    const std::vector<char> no_feature(m.num_edges(), 0), all_features(m.num_edges(), 1);
+    EXPECT_EQ(GR::folded_edges(flat), 0u) << name;
+    const std::size_t folds = GR::folded_edges(m);
+    EXPECT_GE(folds, 2u) << name;
+    EXPECT_EQ(GR::folded_edges(m, &all_features), 0u) << name;
+    const GR::Topology_summary topology = GR::topology_summary(flat);
+    EXPECT_EQ(GR::broken_guarantee(flat, topology, {}, {}, 0, no_feature), "") << name;
+    EXPECT_EQ(GR::broken_guarantee(m, topology, {}, {}, 0, no_feature), "a triangle is folded over onto a neighbour") << name;
+    EXPECT_EQ(GR::broken_guarantee(m, topology, {}, {}, folds, no_feature), "") << name;
+    EXPECT_EQ(GR::broken_guarantee(m, topology, {}, {}, 0, all_features), "") << name;
+  }
+}
+
 TEST(Connectivity_pass, RelaxationImprovesWithoutFolding)
 {
   for(double push : {0.3, 0.45, 0.49})

@@ -3,9 +3,10 @@
 //
 // What a run promises about the working mesh, checked after every run in debug builds: a valid
 // halfedge structure of triangles, none degenerate, the topology of the input (Euler
-// characteristic, connected components, border cycles), fixed vertices where they were. The
-// driver, which knows the input's own intersections, adds that no two triangles intersect that
-// did not: a triangle folded over onto its neighbours would.
+// characteristic, connected components, border cycles), fixed vertices where they were, no more
+// folds off the sharp edges than the input had. The driver, which knows the input's own
+// intersections, adds that no two triangles intersect that did not: a triangle folded over onto
+// its neighbours would.
 //
 // (Not "no triangle faces against the nearest reference triangle": where the reference is thinner
 // than a triangle, as on CGAL's anchor, the nearest triangle can be on the other sheet.)
@@ -77,11 +78,35 @@ inline Topology_summary topology_summary(const Work_mesh& m)
   return s;
 }
 
+// The edges of m whose two triangles turn by more than 120 degrees against each other (folds),
+// leaving out those `skip` flags when given. (Sharp edges are 35 degrees and more: no smooth
+// part turns this much over one edge.)
+inline std::size_t folded_edges(const Work_mesh& m, const std::vector<char>* skip = nullptr)
+{
+  std::size_t folds = 0;
+  for(auto e : m.edges())
+  {
+    const auto h = m.halfedge(e), o = m.opposite(h);
+    if(m.is_border(h) || m.is_border(o) || (skip && (*skip)[std::size_t(e)]))
+      continue;
+    auto normal = [&m](Work_mesh::Halfedge_index g) {
+      return area_vector(to_vector(m.point(m.source(g))), to_vector(m.point(m.target(g))),
+                         to_vector(m.point(m.target(m.next(g)))));
+    };
+    const Vector_3d a = normal(h), b = normal(o);
+    if(a.dot(b) < -0.5 * a.norm() * b.norm())
+      ++folds;
+  }
+  return folds;
+}
+
 // The first guarantee `mesh` breaks, in words, or an empty string. `topology` is the input's,
-// `fixed` the vertices that may not move and `fixed_point` their input positions.
+// `fixed` the vertices that may not move and `fixed_point` their input positions,
+// `input_folds` the input's folded_edges(), `feature_edge` flags mesh's sharp and border edges.
 inline std::string broken_guarantee(const Work_mesh& mesh, const Topology_summary& topology,
                                     const std::vector<Work_mesh::Vertex_index>& fixed,
-                                    const std::vector<Vector_3d>& fixed_point)
+                                    const std::vector<Vector_3d>& fixed_point, std::size_t input_folds,
+                                    const std::vector<char>& feature_edge)
 {
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
   if(!CGAL::is_valid_polygon_mesh(mesh) || !CGAL::is_triangle_mesh(mesh))
@@ -105,6 +130,9 @@ inline std::string broken_guarantee(const Work_mesh& mesh, const Topology_summar
     if(CGAL::collinear(p[0], p[1], p[2]))
       return "a triangle is degenerate";
   }
+  // A fold along a sharp edge can be the shape (a thin fin); off them only where the input had one.
+  if(folded_edges(mesh, &feature_edge) > input_folds)
+    return "a triangle is folded over onto a neighbour";
   return std::string();
 }
 

@@ -416,7 +416,8 @@ public:
         fixed_point.push_back(m_reference.point(v));
       }
     const std::string broken =
-      Graphcut_remeshing::broken_guarantee(m_mesh, topology_summary(m_reference_mesh), fixed, fixed_point);
+      Graphcut_remeshing::broken_guarantee(m_mesh, topology_summary(m_reference_mesh), fixed, fixed_point,
+                                           folded_edges(m_reference_mesh), m_state.feature_edge);
     if(!broken.empty())
       return broken;
     m_intersections.invalidate();
