@@ -13,16 +13,7 @@ import sys
 import tempfile
 import threading
 
-failures = []
-checks = 0
-
-
-def check(condition, message):
-    global checks
-    checks += 1
-    if not condition:
-        failures.append(message)
-        print("FAIL: " + message)
+from cli_checks import check, finish
 
 
 def run(args):
@@ -248,5 +239,4 @@ with tempfile.TemporaryDirectory() as tmp:
         code, err = run_on_terminal([mesh, out2, '--quiet'] + short)
         check(code == 0 and err == '', "--quiet on a terminal printed %r" % err[:200])
 
-print("graphcut_remesh CLI: %d checks, %d failed" % (checks, len(failures)))
-sys.exit(1 if failures else 0)
+finish("graphcut_remesh CLI")

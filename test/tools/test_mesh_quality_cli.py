@@ -14,16 +14,7 @@ import subprocess
 import sys
 import tempfile
 
-failures = []
-checks = 0
-
-
-def check(condition, message):
-    global checks
-    checks += 1
-    if not condition:
-        failures.append(message)
-        print("FAIL: " + message)
+from cli_checks import check, finish
 
 
 def read_off(path):
@@ -195,5 +186,4 @@ with tempfile.TemporaryDirectory() as tmp:
     r = run(['--help'])
     check(r.returncode == 0 and 'usage' in r.stdout, "--help")
 
-print("mesh_quality CLI: %d checks, %d failed" % (checks, len(failures)))
-sys.exit(1 if failures else 0)
+finish("mesh_quality CLI")

@@ -14,17 +14,9 @@ import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
-failures = []
-checks = 0
+from cli_checks import check, finish
+
 SVG = '{http://www.w3.org/2000/svg}'
-
-
-def check(condition, message):
-    global checks
-    checks += 1
-    if not condition:
-        failures.append(message)
-        print("FAIL: " + message)
 
 
 def run(args):
@@ -130,5 +122,4 @@ with tempfile.TemporaryDirectory() as tmp:
         check(not os.path.exists(never) and not os.path.exists(os.path.join(tmp, 'mesh.off')),
               "%s: a file was written" % args)
 
-print("render_mesh CLI: %d checks, %d failed" % (checks, len(failures)))
-sys.exit(1 if failures else 0)
+finish("render_mesh CLI")
