@@ -8,9 +8,10 @@
 // Triangles that share a vertex are checked one vertex fan at a time: a fan that, seen along a
 // coordinate axis, is a ring of positively oriented sectors going once around its vertex cannot
 // meet itself. Triangles that share no vertex are checked in pairs from a candidate list: the
-// pairs whose boxes, grown by a margin, overlap. The list stays valid until a vertex drifts
-// farther than the margin from where it was when the list was made, so the relocations of
-// several iterations share one list.
+// pairs whose boxes, grown by a margin around where their vertices were, overlap, kept in a grid.
+// The list holds as long as no vertex drifts farther than the margin; the triangles of a vertex
+// that did, and those a connectivity change made, are put in the grid again and their pairs
+// found anew, so that the list is made once and then kept up to date at the cost of the changes.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_INTERSECTIONS_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_INTERSECTIONS_H
@@ -56,8 +57,12 @@ public:
 
   explicit Triangle_intersections(const Work_mesh& m) : m_mesh(m) {}
 
-  // To be called when the connectivity of the mesh changed: the candidate list is made again.
+  // To be called when the mesh was replaced: the candidate list is made again.
   void invalidate() { m_valid = false; }
+
+  // To be called when triangles were added, removed or put on other vertices: the candidate list
+  // is updated for those triangles.
+  void connectivity_changed() { m_reconnected = true; }
 
   // All intersecting pairs, sorted.
   std::vector<Face_pair> all_pairs()
@@ -71,14 +76,9 @@ public:
   // since the mesh was last known to be without new intersections.
   std::vector<Face_pair> pairs_touching(const std::vector<char>& touched)
   {
-    // Any vertex, not only the touched ones: a caller may have put others back where they were.
     if(m_valid)
-      for(Vertex v : m_mesh.vertices())
-        if(drifted(v))
-        {
-          m_valid = false;
-          break;
-        }
+      update_candidates();
+    m_reconnected = false;
     if(!m_valid)
       make_candidates();
 
@@ -124,6 +124,14 @@ public:
 
 private:
   using Cell = std::array<long long, 3>;
+  using Small_box = std::array<float, 6>; // low x, y, z, high x, y, z
+
+  // A triangle listed in a grid cell, with the axes on which the cell is its box's first.
+  struct Entry
+  {
+    Face face;
+    unsigned char low;
+  };
 
   Point point(Vertex v) const
   {
@@ -169,31 +177,34 @@ private:
   void make_candidates()
   {
     const std::size_t nf = m_mesh.num_faces(), nv = m_mesh.num_vertices();
-    m_triangles.assign(nf, std::array<Vertex, 3>());
+    m_triangles.assign(nf, no_triangle());
     m_anchor.assign(nv, std::array<double, 3>());
     for(Vertex v : m_mesh.vertices())
     {
       const auto& p = m_mesh.point(v);
       m_anchor[std::size_t(v)] = {{p.x(), p.y(), p.z()}};
     }
-    std::vector<CGAL::Bbox_3> boxes(nf);
-    for_each_face([&](Face f) {
-      m_triangles[std::size_t(f)] = face_vertices(m_mesh, f);
-      boxes[std::size_t(f)] = box(f);
-    });
-    double extent = 0;
-    std::size_t count = 0;
+    std::vector<Face> faces;
+    faces.reserve(m_mesh.number_of_faces());
     for(Face f : m_mesh.faces())
-    {
-      const CGAL::Bbox_3& b = boxes[std::size_t(f)];
-      extent += (std::max)({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
-      ++count;
-    }
+      faces.push_back(f);
+    for_each_index(faces.size(), [&](std::size_t i) {
+      m_triangles[std::size_t(faces[i])] = face_vertices(m_mesh, faces[i]);
+    });
     m_candidates.clear();
     m_valid = true;
-    if(count == 0)
+    m_entries = std::vector<Entry>();
+    m_start.assign(2, 0);
+    m_buckets = 1;
+    if(faces.empty())
       return;
-    extent /= double(count);
+    double extent = 0;
+    for(Face f : faces)
+    {
+      const CGAL::Bbox_3 b = box(f);
+      extent += (std::max)({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
+    }
+    extent /= double(faces.size());
     // A quarter of a triangle: the vertices of a relocation move less than that in most
     // iterations, and grown boxes still meet few triangles beyond their neighbours.
     m_margin = 0.25 * extent;
@@ -201,117 +212,269 @@ private:
     m_cell = extent + 2 * m_margin;
     if(!(m_cell > 0))
       m_cell = 1;
-    // Grown, then in single precision (rounded outwards) for a compact grid; the cells are those
-    // of the single-precision boxes. Each entry carries its box, so that a bucket is read in one
-    // sweep of memory, and the axes on which its cell is the cell of the box's low corner.
-    struct Entry
-    {
-      Face face;
-      unsigned char low;
-      std::array<float, 6> box;
-    };
-    std::vector<std::array<float, 6> > small_boxes(nf);
-    std::vector<std::size_t> offset(nf + 1, 0);
-    for_each_face([&](Face f) {
-      CGAL::Bbox_3& b = boxes[std::size_t(f)];
-      std::array<float, 6>& s = small_boxes[std::size_t(f)];
-      const float inf = std::numeric_limits<float>::infinity();
-      s = {{std::nextafter(float(b.xmin() - m_margin), -inf), std::nextafter(float(b.ymin() - m_margin), -inf),
-            std::nextafter(float(b.zmin() - m_margin), -inf), std::nextafter(float(b.xmax() + m_margin), inf),
-            std::nextafter(float(b.ymax() + m_margin), inf), std::nextafter(float(b.zmax() + m_margin), inf)}};
-      b = CGAL::Bbox_3(s[0], s[1], s[2], s[3], s[4], s[5]);
-      std::size_t cells = 0;
-      for_each_cell(b, [&](const Cell&, unsigned char) { ++cells; });
-      offset[std::size_t(f) + 1] = cells;
-    });
-    for(std::size_t i = 0; i < nf; ++i)
-      offset[i + 1] += offset[i];
-    const std::size_t entries = offset[nf];
-    std::size_t buckets = 1;
-    while(buckets < entries)
-      buckets *= 2;
-    // The cells of each triangle, in order, at its offset; then a counting sort by bucket.
-    struct Cell_entry
-    {
-      std::uint32_t bucket; // fewer buckets than twice the entries, which are fewer than 2^31
-      Face face;
-      unsigned char low;
-    };
-    std::vector<Cell_entry> unsorted(entries);
-    for_each_face([&](Face f) {
-      std::size_t k = offset[std::size_t(f)];
-      for_each_cell(boxes[std::size_t(f)], [&](const Cell& c, unsigned char low) {
-        unsorted[k++] = Cell_entry{std::uint32_t(bucket(c, buckets)), f, low};
-      });
-    });
-    offset = std::vector<std::size_t>();
-    boxes = std::vector<CGAL::Bbox_3>();
-    // By low-cell axes first, so that each bucket lists its entries by them (a radix sort).
-    {
-      std::array<std::size_t, 9> by_low{};
-      for(const Cell_entry& e : unsorted)
-        ++by_low[e.low + 1];
-      for(int m = 0; m < 8; ++m)
-        by_low[m + 1] += by_low[m];
-      std::vector<Cell_entry> sorted(entries);
-      for(const Cell_entry& e : unsorted)
-        sorted[by_low[e.low]++] = e;
-      unsorted.swap(sorted);
-    }
-    std::vector<std::size_t> start(buckets + 1, 0);
-    for(const Cell_entry& e : unsorted)
-      ++start[e.bucket + 1];
-    for(std::size_t i = 0; i < buckets; ++i)
-      start[i + 1] += start[i];
-    std::vector<Entry> listed(entries);
-    {
-      std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-      for(const Cell_entry& e : unsorted)
-        listed[fill[e.bucket]++] = Entry{e.face, e.low, small_boxes[std::size_t(e.face)]};
-    }
-    unsorted = std::vector<Cell_entry>();
-    small_boxes = std::vector<std::array<float, 6> >();
+    m_face_box.assign(nf, Small_box());
+    for_each_index(faces.size(), [&](std::size_t i) { m_face_box[std::size_t(faces[i])] = grown_box(faces[i]); });
+    grid_entries(faces, true, m_entries, m_start);
 
     // The pairs of each bucket, each pair in the cell that holds the low corner of the
     // intersection of its boxes (both boxes overlap that cell, so both are listed there). The low
     // corner of the intersection is the largest of the low corners: in a cell both boxes meet, it
     // lies in that cell when on each axis one of the two boxes starts in it. Entries of another
     // cell of the same bucket can only give a pair found elsewhere too. The entries of a bucket
-    // come by their low-cell axes: only the groups whose axes cover all three are paired.
-    auto consider = [&](const Entry& ei, const Entry& ej, std::vector<Face_pair>& found) {
-      const std::array<float, 6>& a = ei.box;
-      const std::array<float, 6>& b = ej.box;
-      if(ei.face == ej.face || b[0] > a[3] || a[0] > b[3] || b[1] > a[4] || a[1] > b[4] || b[2] > a[5] || a[2] > b[5])
-        return;
-      const std::array<Vertex, 3>& ti = m_triangles[std::size_t(ei.face)];
-      const std::array<Vertex, 3>& tj = m_triangles[std::size_t(ej.face)];
-      bool common = false;
-      for(Vertex u : ti)
-        common = common || u == tj[0] || u == tj[1] || u == tj[2];
-      if(!common)
-        found.push_back(ei.face < ej.face ? Face_pair(ei.face, ej.face) : Face_pair(ej.face, ei.face));
-    };
-    collect_by_blocks(buckets, m_candidates, [&](std::size_t k, std::vector<Face_pair>& found) {
+    // come by their low-cell axes: only the groups whose axes cover all three are paired. Each
+    // entry is read with a copy of its box, so that a bucket is one sweep of memory.
+    std::vector<Small_box> listed_box(m_entries.size());
+    for_each_index(m_entries.size(), [&](std::size_t i) { listed_box[i] = m_face_box[std::size_t(m_entries[i].face)]; });
+    collect_by_blocks(m_buckets, m_candidates, [&](std::size_t k, std::vector<Face_pair>& found) {
       std::array<std::size_t, 9> group; // the entries of low-cell axes m: [group[m], group[m + 1])
-      for(std::size_t m = 0, i = start[k]; m < 8; ++m)
+      for(std::size_t m = 0, i = m_start[k]; m < 8; ++m)
       {
         group[m] = i;
-        while(i < start[k + 1] && listed[i].low == m)
+        while(i < m_start[k + 1] && m_entries[i].low == m)
           ++i;
       }
-      group[8] = start[k + 1];
+      group[8] = m_start[k + 1];
       for(int ga = 0; ga < 8; ++ga)
         for(int gb = ga; gb < 8; ++gb)
           if((ga | gb) == 7)
             for(std::size_t i = group[ga]; i < group[ga + 1]; ++i)
               for(std::size_t j = (ga == gb ? i + 1 : group[gb]); j < group[gb + 1]; ++j)
-                consider(listed[i], listed[j], found);
+              {
+                const Face fi = m_entries[i].face, fj = m_entries[j].face;
+                if(fi != fj && overlap(listed_box[i], listed_box[j]) && !share_vertex(fi, fj))
+                  found.push_back(fi < fj ? Face_pair(fi, fj) : Face_pair(fj, fi));
+              }
     });
     // Two cells may share a bucket, and a triangle be listed there twice: a pair can be found
     // more than once.
     sort_pairs(m_candidates);
     m_candidates.erase(std::unique(m_candidates.begin(), m_candidates.end()), m_candidates.end());
     m_candidates.shrink_to_fit();
+  }
+
+  // The candidates of the triangles that are new, gone, on other vertices or on a vertex that
+  // drifted, found in the grid, which is updated for them; the other candidates stay. A drifted
+  // vertex (or a new one) is anchored where it is, and the boxes of its triangles grown again.
+  // When many triangles changed, the list is made again.
+  void update_candidates()
+  {
+    const std::size_t nf = m_mesh.num_faces(), nv = m_mesh.num_vertices();
+    if(nf < m_triangles.size() || nv < m_anchor.size())
+    {
+      m_valid = false;
+      return;
+    }
+    m_triangles.resize(nf, no_triangle());
+    std::vector<char> changed(nf, 0);
+    std::vector<Face> changed_faces; // those still in the mesh
+    std::size_t number_changed = 0;
+    if(m_reconnected)
+      for(std::size_t i = 0; i < nf; ++i)
+      {
+        const Face f(static_cast<Face::size_type>(i));
+        const bool removed = m_mesh.is_removed(f);
+        const std::array<Vertex, 3> t = removed ? no_triangle() : face_vertices(m_mesh, f);
+        if(t == m_triangles[i])
+          continue;
+        changed[i] = 1;
+        ++number_changed;
+        m_triangles[i] = t;
+        if(!removed)
+          changed_faces.push_back(f);
+      }
+    // Any vertex, not only the touched ones: a caller may have put others back where they were.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    m_anchor.resize(nv, {{nan, nan, nan}}); // new vertices have drifted
+    for(Vertex v : m_mesh.vertices())
+      if(drifted(v))
+      {
+        const auto& p = m_mesh.point(v);
+        m_anchor[std::size_t(v)] = {{p.x(), p.y(), p.z()}};
+        if(m_mesh.halfedge(v) != Work_mesh::null_halfedge())
+          for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+            if(!m_mesh.is_border(h) && !changed[std::size_t(m_mesh.face(h))])
+            {
+              changed[std::size_t(m_mesh.face(h))] = 1;
+              ++number_changed;
+              changed_faces.push_back(m_mesh.face(h));
+            }
+      }
+    if(number_changed == 0)
+      return;
+    // Each changed triangle scans its cells; beyond an eighth of them a new grid costs less.
+    if(8 * number_changed > nf)
+    {
+      m_valid = false;
+      return;
+    }
+
+    // The grid: the entries of changed triangles out, those of their new boxes in, each bucket
+    // still by low-cell axes.
+    m_face_box.resize(nf);
+    for(Face f : changed_faces)
+      m_face_box[std::size_t(f)] = grown_box(f);
+    std::vector<Entry> added;
+    std::vector<std::size_t> added_start;
+    grid_entries(changed_faces, false, added, added_start);
+    if(m_entries.size() + added.size() > 2 * m_buckets)
+    {
+      m_valid = false;
+      return;
+    }
+    std::vector<Entry> merged;
+    merged.reserve(m_entries.size() + added.size());
+    std::vector<std::size_t> start(m_buckets + 1);
+    for(std::size_t b = 0; b < m_buckets; ++b)
+    {
+      start[b] = merged.size();
+      std::size_t i = m_start[b], j = added_start[b];
+      for(;;)
+      {
+        while(i < m_start[b + 1] && changed[std::size_t(m_entries[i].face)])
+          ++i;
+        const bool old_left = i < m_start[b + 1], added_left = j < added_start[b + 1];
+        if(!old_left && !added_left)
+          break;
+        if(old_left && (!added_left || m_entries[i].low <= added[j].low))
+          merged.push_back(m_entries[i++]);
+        else
+          merged.push_back(added[j++]);
+      }
+    }
+    start[m_buckets] = merged.size();
+    m_entries.swap(merged);
+    m_start.swap(start);
+
+    // The candidates: those of unchanged triangles kept, those of changed ones found in the cells
+    // of their boxes by the rule of make_candidates(); a pair of two changed triangles from the
+    // one of lower index.
+    m_candidates.erase(std::remove_if(m_candidates.begin(), m_candidates.end(),
+                                      [&](const Face_pair& p) {
+                                        return changed[std::size_t(p.first)] || changed[std::size_t(p.second)];
+                                      }),
+                       m_candidates.end());
+    std::vector<Face_pair> found;
+    collect_by_blocks(changed_faces.size(), found, [&](std::size_t i, std::vector<Face_pair>& out) {
+      const Face d = changed_faces[i];
+      const Small_box& a = m_face_box[std::size_t(d)];
+      for_each_cell(a, [&](const Cell& c, unsigned char low) {
+        const std::size_t b = bucket(c);
+        for(std::size_t k = m_start[b]; k < m_start[b + 1]; ++k)
+        {
+          const Face e = m_entries[k].face;
+          if((low | m_entries[k].low) != 7 || e == d || (changed[std::size_t(e)] && e < d))
+            continue;
+          if(overlap(a, m_face_box[std::size_t(e)]) && !share_vertex(d, e))
+            out.push_back(d < e ? Face_pair(d, e) : Face_pair(e, d));
+        }
+      });
+    });
+    sort_pairs(found);
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    std::vector<Face_pair> all(m_candidates.size() + found.size());
+    std::merge(m_candidates.begin(), m_candidates.end(), found.begin(), found.end(), all.begin());
+    m_candidates.swap(all);
+  }
+
+  // The grid entries of `faces`, from their boxes in m_face_box: one per cell a box overlaps,
+  // sorted by bucket and in a bucket by low-cell axes (two stable counting sorts); bucket b's
+  // entries are [start[b], start[b + 1]). With `choose_buckets`, the number of buckets is first
+  // set to the power of two at or above the number of entries.
+  void grid_entries(const std::vector<Face>& faces, bool choose_buckets, std::vector<Entry>& entries,
+                    std::vector<std::size_t>& start)
+  {
+    const std::size_t n = faces.size();
+    std::vector<std::size_t> offset(n + 1, 0);
+    for_each_index(n, [&](std::size_t i) {
+      std::size_t cells = 0;
+      for_each_cell(m_face_box[std::size_t(faces[i])], [&](const Cell&, unsigned char) { ++cells; });
+      offset[i + 1] = cells;
+    });
+    for(std::size_t i = 0; i < n; ++i)
+      offset[i + 1] += offset[i];
+    const std::size_t count = offset[n];
+    if(choose_buckets)
+    {
+      m_buckets = 1;
+      while(m_buckets < count)
+        m_buckets *= 2;
+    }
+    struct Cell_entry
+    {
+      std::uint32_t bucket; // fewer buckets than twice the entries, which are fewer than 2^31
+      Entry entry;
+    };
+    std::vector<Cell_entry> unsorted(count);
+    for_each_index(n, [&](std::size_t i) {
+      std::size_t k = offset[i];
+      for_each_cell(m_face_box[std::size_t(faces[i])], [&](const Cell& c, unsigned char low) {
+        unsorted[k++] = Cell_entry{std::uint32_t(bucket(c)), Entry{faces[i], low}};
+      });
+    });
+    offset = std::vector<std::size_t>();
+    std::vector<Cell_entry> by_low(count);
+    {
+      std::array<std::size_t, 9> first{};
+      for(const Cell_entry& e : unsorted)
+        ++first[e.entry.low + 1];
+      for(int m = 0; m < 8; ++m)
+        first[m + 1] += first[m];
+      for(const Cell_entry& e : unsorted)
+        by_low[first[e.entry.low]++] = e;
+    }
+    unsorted = std::vector<Cell_entry>();
+    start.assign(m_buckets + 1, 0);
+    for(const Cell_entry& e : by_low)
+      ++start[e.bucket + 1];
+    for(std::size_t b = 0; b < m_buckets; ++b)
+      start[b + 1] += start[b];
+    entries.resize(count);
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for(const Cell_entry& e : by_low)
+      entries[fill[e.bucket]++] = e.entry;
+  }
+
+  // The box of f's vertices at their anchors, grown by the margin, in single precision rounded
+  // outwards: it holds f for as long as no vertex drifts farther than the margin.
+  Small_box grown_box(Face f) const
+  {
+    std::array<double, 3> low, high;
+    low.fill(std::numeric_limits<double>::infinity());
+    high.fill(-std::numeric_limits<double>::infinity());
+    for(Vertex v : m_triangles[std::size_t(f)])
+      for(int a = 0; a < 3; ++a)
+      {
+        low[a] = (std::min)(low[a], m_anchor[std::size_t(v)][a]);
+        high[a] = (std::max)(high[a], m_anchor[std::size_t(v)][a]);
+      }
+    const float inf = std::numeric_limits<float>::infinity();
+    Small_box b;
+    for(int a = 0; a < 3; ++a)
+    {
+      b[a] = std::nextafter(float(low[a] - m_margin), -inf);
+      b[a + 3] = std::nextafter(float(high[a] + m_margin), inf);
+    }
+    return b;
+  }
+
+  static bool overlap(const Small_box& a, const Small_box& b)
+  {
+    return !(b[0] > a[3] || a[0] > b[3] || b[1] > a[4] || a[1] > b[4] || b[2] > a[5] || a[2] > b[5]);
+  }
+
+  bool share_vertex(Face f, Face g) const
+  {
+    const std::array<Vertex, 3>& a = m_triangles[std::size_t(f)];
+    const std::array<Vertex, 3>& b = m_triangles[std::size_t(g)];
+    for(Vertex u : a)
+      if(u == b[0] || u == b[1] || u == b[2])
+        return true;
+    return false;
+  }
+
+  static std::array<Vertex, 3> no_triangle()
+  {
+    return {{Work_mesh::null_vertex(), Work_mesh::null_vertex(), Work_mesh::null_vertex()}};
   }
 
   // function(f) for each face, in parallel.
@@ -342,9 +505,9 @@ private:
   // function(c, low) for each cell c the box overlaps; bit a of `low` says whether c is the box's
   // first cell along axis a.
   template <typename Function>
-  void for_each_cell(const CGAL::Bbox_3& b, const Function& function) const
+  void for_each_cell(const Small_box& b, const Function& function) const
   {
-    const Cell lo = cell_of(b.xmin(), b.ymin(), b.zmin()), hi = cell_of(b.xmax(), b.ymax(), b.zmax());
+    const Cell lo = cell_of(b[0], b[1], b[2]), hi = cell_of(b[3], b[4], b[5]);
     Cell c;
     for(c[0] = lo[0]; c[0] <= hi[0]; ++c[0])
       for(c[1] = lo[1]; c[1] <= hi[1]; ++c[1])
@@ -352,11 +515,11 @@ private:
           function(c, static_cast<unsigned char>((c[0] == lo[0]) | (c[1] == lo[1]) << 1 | (c[2] == lo[2]) << 2));
   }
 
-  static std::size_t bucket(const Cell& c, std::size_t buckets)
+  std::size_t bucket(const Cell& c) const
   {
     const std::uint64_t h = std::uint64_t(c[0]) * 73856093u ^ std::uint64_t(c[1]) * 19349663u ^
                             std::uint64_t(c[2]) * 83492791u;
-    return std::size_t(h * 0x9E3779B97F4A7C15ull >> 20) & (buckets - 1);
+    return std::size_t(h * 0x9E3779B97F4A7C15ull >> 20) & (m_buckets - 1);
   }
 
   // The triangles around v, each with its other two vertices in the order of the face.
@@ -485,13 +648,18 @@ private:
   }
 
   const Work_mesh& m_mesh;
-  bool m_valid = false;
-  double m_margin = 0;                           // how far boxes were grown
-  double m_cell = 1;                             // the side of a grid cell
-  std::vector<std::array<Vertex, 3> > m_triangles; // by face, when the list was made
-  std::vector<std::array<double, 3> > m_anchor;    // by vertex, where it was then
-  std::vector<Face_pair> m_candidates;           // sorted
-  std::vector<CGAL::Bbox_3> m_boxes;              // by face, at the last check
+  bool m_valid = false;                            // the grid and the candidate list exist
+  bool m_reconnected = false;                      // triangles changed since they were updated
+  double m_margin = 0;                             // how far boxes were grown
+  double m_cell = 1;                               // the side of a grid cell
+  std::size_t m_buckets = 1;                       // of the grid, a power of two
+  std::vector<std::size_t> m_start;                // by bucket: its first entry
+  std::vector<Entry> m_entries;                    // by bucket, in a bucket by low-cell axes
+  std::vector<Small_box> m_face_box;               // by face: its grown box in the grid
+  std::vector<std::array<Vertex, 3> > m_triangles; // by face: its vertices in the grid (or nulls)
+  std::vector<std::array<double, 3> > m_anchor;    // by vertex: where its boxes were grown around
+  std::vector<Face_pair> m_candidates;             // sorted
+  std::vector<CGAL::Bbox_3> m_boxes;               // by face, at the last check
 };
 
 } // namespace Graphcut_remeshing

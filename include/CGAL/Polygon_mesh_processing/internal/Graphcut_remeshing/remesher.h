@@ -445,7 +445,11 @@ public:
       const Connectivity_counts counts = optimizer.run();
       m_intersection_frozen.resize(m_mesh.num_vertices(), 0);
       collect_feature_edges();
-      const std::vector<std::pair<Face, Face> > fresh = new_self_intersections();
+      // The mesh had no new intersections before the pass: only triangles it changed or moved
+      // can have made some.
+      m_intersections.connectivity_changed();
+      const std::vector<char> changed = changed_vertices(mesh_before);
+      const std::vector<std::pair<Face, Face> > fresh = new_self_intersections(&changed);
 #ifdef CGAL_GRAPHCUT_REMESHING_VERBOSE
       std::cerr << "connectivity pass, attempt " << attempt << ": " << counts.flips << " flips, "
                 << counts.splits << " splits, " << counts.collapses << " collapses, "
@@ -491,6 +495,22 @@ private:
   };
 
   std::array<Vertex, 3> face_vertices(Face f) const { return Graphcut_remeshing::face_vertices(m_mesh, f); }
+
+  // By vertex of the working mesh: whether it is new, moved or on a triangle that is new or on
+  // other vertices since the mesh was `before`.
+  std::vector<char> changed_vertices(const Work_mesh& before) const
+  {
+    std::vector<char> changed(m_mesh.num_vertices(), 0);
+    for(Vertex v : m_mesh.vertices())
+      changed[std::size_t(v)] = std::size_t(v) >= before.num_vertices() || before.is_removed(v) ||
+                                before.point(v) != m_mesh.point(v);
+    for(Face f : m_mesh.faces())
+      if(std::size_t(f) >= before.num_faces() || before.is_removed(f) ||
+         Graphcut_remeshing::face_vertices(before, f) != face_vertices(f))
+        for(Vertex v : face_vertices(f))
+          changed[std::size_t(v)] = 1;
+    return changed;
+  }
 
   // The halfedges of f to its vertices, in the order of face_vertices(f).
   std::array<Halfedge, 3> halfedges_to_vertices(Face f) const
