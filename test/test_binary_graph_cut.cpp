@@ -1,11 +1,16 @@
 // Copyright (c) 2026 the Graphcut_remeshing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The binary decision against brute force over all 2^n labellings.
+// The binary decision against brute force over all 2^n labellings, and its minimum cut against
+// Boost's Boykov-Kolmogorov max-flow.
 
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/binary_graph_cut.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/max_flow.h>
 
 #include <CGAL/Random.h>
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 
 #include <gtest/gtest.h>
 
@@ -14,6 +19,7 @@
 #include <vector>
 
 using CGAL::Polygon_mesh_processing::internal::Graphcut_remeshing::Binary_graph_cut;
+using CGAL::Polygon_mesh_processing::internal::Graphcut_remeshing::Max_flow;
 
 namespace {
 
@@ -157,4 +163,125 @@ TEST(BinaryGraphCut, NeverWorseThanKeepingOnArbitraryEnergies)
   }
   // The bound must not freeze everything: most random energies can be improved.
   EXPECT_GT(strictly_better, 250);
+}
+
+namespace {
+
+struct Arc { std::size_t u, v; double capacity, reverse_capacity; };
+
+// Boost's maximum flow value and the nodes its source tree ends with, on the same graph with the
+// terminals as nodes n (source) and n + 1 (sink).
+double boost_max_flow(std::size_t n, const std::vector<double>& source, const std::vector<double>& sink,
+                      const std::vector<Arc>& arcs, std::vector<char>& source_side)
+{
+  using Traits = boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS>;
+  using Graph = boost::adjacency_list<
+    boost::vecS, boost::vecS, boost::directedS,
+    boost::property<boost::vertex_index_t, long,
+      boost::property<boost::vertex_color_t, boost::default_color_type,
+        boost::property<boost::vertex_distance_t, long,
+          boost::property<boost::vertex_predecessor_t, Traits::edge_descriptor> > > >,
+    boost::property<boost::edge_capacity_t, double,
+      boost::property<boost::edge_residual_capacity_t, double,
+        boost::property<boost::edge_reverse_t, Traits::edge_descriptor> > > >;
+  Graph g(n + 2);
+  auto capacity = get(boost::edge_capacity, g);
+  auto reverse = get(boost::edge_reverse, g);
+  auto add = [&](std::size_t u, std::size_t v, double c, double rc) {
+    const auto a = add_edge(u, v, g).first, b = add_edge(v, u, g).first;
+    capacity[a] = c;
+    capacity[b] = rc;
+    reverse[a] = b;
+    reverse[b] = a;
+  };
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    if(source[i] > 0)
+      add(n, i, source[i], 0);
+    if(sink[i] > 0)
+      add(i, n + 1, sink[i], 0);
+  }
+  for(const Arc& a : arcs)
+    add(a.u, a.v, a.capacity, a.reverse_capacity);
+  const double flow = boost::boykov_kolmogorov_max_flow(g, n, n + 1);
+  auto color = get(boost::vertex_color, g);
+  source_side.assign(n, 0);
+  for(std::size_t i = 0; i < n; ++i)
+    source_side[i] = color[i] == boost::black_color;
+  return flow;
+}
+
+} // namespace
+
+TEST(MaxFlow, SameCutAsBoostOnRandomGraphs)
+{
+  // Integer capacities, so that every flow is exact and the source side of the smallest minimum
+  // cut is one set, whichever order the paths were found in. Sparse random graphs and grids
+  // (the neighbourhoods of the binary decision), from a few nodes to a few thousand.
+  CGAL::Random rng(17);
+  std::size_t nontrivial = 0;
+  for(int trial = 0; trial < 60; ++trial)
+  {
+    SCOPED_TRACE(trial);
+    const bool grid = trial % 2 == 1;
+    const std::size_t side = std::size_t(2 + trial), n = grid ? side * side : std::size_t(3 + 40 * trial);
+    std::vector<double> source(n, 0), sink(n, 0);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const int t = rng.get_int(-12, 13);
+      (t > 0 ? source[i] : sink[i]) = std::abs(t);
+      if(rng.get_double() < 0.1) // both terminals: only the difference counts
+      {
+        source[i] += 5;
+        sink[i] += 5;
+      }
+    }
+    std::vector<Arc> arcs;
+    if(grid)
+    {
+      for(std::size_t r = 0; r < side; ++r)
+        for(std::size_t c = 0; c < side; ++c)
+        {
+          if(c + 1 < side)
+            arcs.push_back({r * side + c, r * side + c + 1, double(rng.get_int(0, 9)), double(rng.get_int(0, 9))});
+          if(r + 1 < side)
+            arcs.push_back({r * side + c, (r + 1) * side + c, double(rng.get_int(0, 9)), double(rng.get_int(0, 9))});
+        }
+    }
+    else
+      for(std::size_t k = 0; k < 3 * n; ++k)
+      {
+        const std::size_t u = rng.get_int(0, int(n)), v = rng.get_int(0, int(n));
+        if(u != v)
+          arcs.push_back({u, v, double(rng.get_int(0, 9)), double(rng.get_int(0, 3))});
+      }
+
+    Max_flow flow(n);
+    for(std::size_t i = 0; i < n; ++i)
+      flow.add_terminal_capacities(Max_flow::Index(i), source[i], sink[i]);
+    for(const Arc& a : arcs)
+      flow.count_arc(Max_flow::Index(a.u), Max_flow::Index(a.v));
+    for(const Arc& a : arcs)
+      flow.add_arc(Max_flow::Index(a.u), Max_flow::Index(a.v), a.capacity, a.reverse_capacity);
+    flow.solve();
+    std::vector<char> ours(n);
+    for(std::size_t i = 0; i < n; ++i)
+      ours[i] = flow.is_on_source_side(Max_flow::Index(i));
+
+    // The capacity of our cut is the maximum flow.
+    double cut = 0;
+    for(std::size_t i = 0; i < n; ++i)
+      cut += ours[i] ? sink[i] : source[i];
+    for(const Arc& a : arcs)
+      cut += ours[a.u] && !ours[a.v] ? a.capacity : (!ours[a.u] && ours[a.v] ? a.reverse_capacity : 0);
+    std::vector<char> theirs;
+    const double maximum = boost_max_flow(n, source, sink, arcs, theirs);
+    EXPECT_EQ(cut, maximum);
+    EXPECT_EQ(ours, theirs);
+    std::size_t on_source_side = 0;
+    for(char c : ours)
+      on_source_side += c;
+    nontrivial += on_source_side > 0 && on_source_side < n ? 1 : 0;
+  }
+  EXPECT_GT(nontrivial, 50u);
 }

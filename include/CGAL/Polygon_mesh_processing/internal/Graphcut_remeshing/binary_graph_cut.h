@@ -17,9 +17,7 @@
 
 #include <CGAL/assertions.h>
 
-#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
-#include <boost/graph/compressed_sparse_row_graph.hpp>
-#include <boost/property_map/property_map.hpp>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/max_flow.h>
 
 #include <algorithm>
 #include <array>
@@ -382,14 +380,12 @@ private:
       pairwise.resize(out);
     }
 
-    // The s-t graph: node index = variable, then auxiliary nodes, then s and t. A node on the
-    // sink side has label 1. A pairwise a yi yj with a < 0 is a yi + (-a) yi (1 - yj): an arc
-    // j -> i of capacity -a. The arcs, each with its reverse, are enumerated twice: to count each
-    // node's arcs, then to lay them out by tail, each node's in the order enumerated, in the
-    // arrays of a compressed sparse row graph (no list of arcs, no allocation per arc).
-    const std::size_t number_of_nodes = n + aux.size() + 2;
+    // The s-t graph: node index = variable, then auxiliary nodes. A node on the sink side has
+    // label 1. A pairwise a yi yj with a < 0 is a yi + (-a) yi (1 - yj): an arc j -> i of capacity
+    // -a. A positive unary is paid when the node is on the sink side (an arc from the source), a
+    // negative one when it is on the source side (an arc to the sink).
+    const std::size_t number_of_nodes = n + aux.size();
     CGAL_precondition(number_of_nodes < std::size_t(no_index));
-    const Index source = Index(n + aux.size()), sink = source + 1;
     std::vector<double> node_unary(number_of_nodes, 0.);
     for(std::size_t i = 0; i < n; ++i)
       node_unary[i] = unary[i];
@@ -402,69 +398,27 @@ private:
         node_unary[n + q] += aux[q].pairwise; // w y_v = w - w (1 - y_v)
     }
     unary = std::vector<double>();
+    Max_flow flow(number_of_nodes);
+    for(std::size_t i = 0; i < number_of_nodes; ++i)
+      flow.add_terminal_capacities(Index(i), (std::max)(node_unary[i], 0.), (std::max)(-node_unary[i], 0.));
+    node_unary = std::vector<double>();
     auto for_each_arc = [&](const auto& arc) { // arc(tail, head, capacity), capacity > 0
       for(const Pair& p : pairwise)
         arc(p.j, p.i, -p.c);
       for(std::size_t q = 0; q < aux.size(); ++q)
         for(Index v : aux[q].variables)
           arc(v, Index(n + q), -aux[q].pairwise);
-      for(std::size_t i = 0; i + 2 < number_of_nodes; ++i)
-      {
-        const double u = node_unary[i];
-        if(u > 0)
-          arc(source, Index(i), u); // paid when i is on the sink side (label 1)
-        else if(u < 0)
-          arc(Index(i), sink, -u);  // paid when i is on the source side (label 0)
-      }
     };
-    std::vector<std::size_t> next(number_of_nodes + 1, 0);
-    for_each_arc([&](Index u, Index v, double) {
-      ++next[u + 1];
-      ++next[v + 1];
-    });
-    for(std::size_t i = 0; i < number_of_nodes; ++i)
-      next[i + 1] += next[i];
-    const std::size_t number_of_arcs = next[number_of_nodes];
-    CGAL_precondition(number_of_arcs < std::size_t(no_index));
-
-    using Graph = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, boost::no_property,
-                                                     boost::no_property, Index, Index>;
-    using Arc_descriptor = boost::graph_traits<Graph>::edge_descriptor;
-    std::vector<std::pair<Index, Index> > sorted(number_of_arcs);
-    std::vector<double> capacity(number_of_arcs), residual(number_of_arcs);
-    std::vector<Arc_descriptor> reverse(number_of_arcs);
-    for_each_arc([&](Index u, Index v, double c) {
-      const Index pu = Index(next[u]++), pv = Index(next[v]++);
-      sorted[pu] = {u, v};
-      sorted[pv] = {v, u};
-      capacity[pu] = c;
-      capacity[pv] = 0;
-      reverse[pu] = Arc_descriptor(v, pv);
-      reverse[pv] = Arc_descriptor(u, pu);
-    });
-    next = std::vector<std::size_t>();
-    node_unary = std::vector<double>();
+    for_each_arc([&](Index u, Index v, double) { flow.count_arc(u, v); });
+    for_each_arc([&](Index u, Index v, double c) { flow.add_arc(u, v, c, 0.); });
     pairwise = std::vector<Pair>();
     aux = std::vector<Aux>();
-    const Graph g(boost::edges_are_sorted, sorted.begin(), sorted.end(), number_of_nodes);
-    sorted = std::vector<std::pair<Index, Index> >();
-    std::vector<Arc_descriptor> predecessor(number_of_nodes);
-    std::vector<boost::default_color_type> color(number_of_nodes);
-    std::vector<long> distance(number_of_nodes);
-    const auto arc_index = get(boost::edge_index, g);
-    const auto node_index = get(boost::vertex_index, g);
-    boost::boykov_kolmogorov_max_flow(
-      g, boost::make_iterator_property_map(capacity.begin(), arc_index),
-      boost::make_iterator_property_map(residual.begin(), arc_index),
-      boost::make_iterator_property_map(reverse.begin(), arc_index),
-      boost::make_iterator_property_map(predecessor.begin(), node_index),
-      boost::make_iterator_property_map(color.begin(), node_index),
-      boost::make_iterator_property_map(distance.begin(), node_index), node_index, source, sink);
+    flow.solve();
 
     std::vector<char> labels(n, 0);
     for(std::size_t i = 0; i < n; ++i)
     {
-      const bool y = color[i] != boost::black_color; // black: source tree, label 0
+      const bool y = !flow.is_on_source_side(Index(i));
       labels[i] = static_cast<char>(y != (m_mapping[i] != 0)); // x = y xor m
     }
     return labels;

@@ -84,9 +84,10 @@ public:
 
     const std::size_t nf = m_mesh.num_faces();
     std::vector<char> query(nf, 0);
-    for(Face f : m_mesh.faces())
+    for_each_face([&](Face f) {
       for(Vertex v : m_triangles[std::size_t(f)])
         query[std::size_t(f)] |= touched[std::size_t(v)];
+    });
 
     std::vector<Face_pair> out;
     // Triangles that share a vertex: the fans of the vertices of the queried triangles.
@@ -160,7 +161,7 @@ private:
   template <typename Function>
   static void collect_by_blocks(std::size_t n, std::vector<Face_pair>& out, const Function& function)
   {
-    const std::size_t block = 4096, number_of_blocks = (n + block - 1) / block;
+    const std::size_t block = 1024, number_of_blocks = (n + block - 1) / block;
     std::vector<std::vector<Face_pair> > found(number_of_blocks);
     for_each_index(number_of_blocks, [&](std::size_t bi) {
       for(std::size_t i = bi * block; i < (std::min)(n, (bi + 1) * block); ++i)
@@ -316,7 +317,7 @@ private:
     std::vector<Entry> added;
     std::vector<std::size_t> added_start;
     grid_entries(changed_faces, false, added, added_start);
-    if(m_entries.size() + added.size() > 2 * m_buckets)
+    if(m_entries.size() + added.size() > 16 * m_buckets)
     {
       m_valid = false;
       return;
@@ -379,7 +380,7 @@ private:
   // The grid entries of `faces`, from their boxes in m_face_box: one per cell a box overlaps,
   // sorted by bucket and in a bucket by low-cell axes (two stable counting sorts); bucket b's
   // entries are [start[b], start[b + 1]). With `choose_buckets`, the number of buckets is first
-  // set to the power of two at or above the number of entries.
+  // set to the power of two at or above an eighth of the number of entries.
   void grid_entries(const std::vector<Face>& faces, bool choose_buckets, std::vector<Entry>& entries,
                     std::vector<std::size_t>& start)
   {
@@ -395,13 +396,14 @@ private:
     const std::size_t count = offset[n];
     if(choose_buckets)
     {
+      // A cell holds some twenty entries: an eighth of them is still more buckets than cells.
       m_buckets = 1;
-      while(m_buckets < count)
+      while(8 * m_buckets < count)
         m_buckets *= 2;
     }
     struct Cell_entry
     {
-      std::uint32_t bucket; // fewer buckets than twice the entries, which are fewer than 2^31
+      std::uint32_t bucket; // fewer buckets than entries, which are fewer than 2^31
       Entry entry;
     };
     std::vector<Cell_entry> unsorted(count);

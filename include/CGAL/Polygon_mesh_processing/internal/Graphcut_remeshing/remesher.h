@@ -682,9 +682,9 @@ private:
         const std::array<Vector_3d, 3> p = triangle_with(m_mesh.face(h), v, x);
         triangles.push_back(Triangle_term{h, p, triangle_shape_term(p[0], p[1], p[2])});
         u += triangles.back().shape;
+        if(!(u < bound))
+          return u;
       }
-    if(!(u < bound))
-      return u;
     u += data_energy(v, x, hint);
     for(const Triangle_term& t : triangles)
     {
