@@ -578,17 +578,6 @@ private:
            squared_distance((a + b) / 2, m_state.edge_hint[std::size_t(m_feature_edges[i])]);
   }
 
-  // The corners of triangle f with its vertex v at x and the others where they are, in the order
-  // of the triangle's vertices (so that its terms do not depend on the caller).
-  std::array<Vector_3d, 3> triangle_with(Face f, Vertex v, const Vector_3d& x) const
-  {
-    const std::array<Vertex, 3> t = face_vertices(f);
-    std::array<Vector_3d, 3> p;
-    for(int i = 0; i < 3; ++i)
-      p[i] = t[i] == v ? x : position(t[i]);
-    return p;
-  }
-
   // eq. (7) at the current position of v, from the terms kept: local_evidence(v, position(v)).
   double current_local_evidence(Vertex v) const
   {
@@ -658,6 +647,50 @@ private:
     return feature_edge_energy(i, position(m_mesh.source(h)), position(m_mesh.target(h)));
   }
 
+  // What the local evidence of a vertex v reads of the mesh, gathered once for all the positions
+  // of v it is evaluated at: the triangles around v with their corners (v's to be replaced by the
+  // position), and for a vertex on a feature its feature edges with their other ends.
+  struct Star
+  {
+    struct Triangle
+    {
+      Halfedge h;                       // to v
+      std::array<Vector_3d, 3> corners; // in the order of the face's vertices
+      int slot;                         // which corner is v
+    };
+    Vertex v;
+    boost::container::small_vector<Triangle, 12> triangles;
+    boost::container::small_vector<std::pair<std::size_t, Vector_3d>, 4> feature_edges; // slot, other end
+  };
+
+  Star star(Vertex v) const
+  {
+    Star s;
+    s.v = v;
+    for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+    {
+      if(!m_mesh.is_border(h))
+      {
+        const std::array<Vertex, 3> t = face_vertices(m_mesh.face(h));
+        Star::Triangle triangle{h, {}, 0};
+        for(int i = 0; i < 3; ++i)
+        {
+          triangle.corners[i] = position(t[i]);
+          if(t[i] == v)
+            triangle.slot = i;
+        }
+        s.triangles.push_back(triangle);
+      }
+      if(kind_of(v) == Vertex_kind::feature_vertex)
+      {
+        const std::size_t i = m_feature_edge_slot[std::size_t(m_mesh.edge(h))];
+        if(i != Binary_graph_cut::none)
+          s.feature_edges.emplace_back(i, position(m_mesh.source(h)));
+      }
+    }
+    return s;
+  }
+
   // eq. (7): the energy terms that depend on the position x of vertex v. The terms are not
   // negative: once their sum reaches `bound` the rest is not evaluated (a candidate that reaches
   // the current local evidence is refused whatever the rest adds). The shape terms come first:
@@ -665,44 +698,40 @@ private:
   //
   // With `record`, the terms of each triangle are also written there, at the index of the
   // triangle's halfedge to v. `hint` is where the search for the data term of v starts.
-  double local_evidence(Vertex v, const Vector_3d& x, double bound = std::numeric_limits<double>::infinity(),
+  double local_evidence(const Star& s, const Vector_3d& x, double bound = std::numeric_limits<double>::infinity(),
                         std::vector<double>* record = nullptr, Face hint = Work_mesh::null_face()) const
   {
-    struct Triangle_term
-    {
-      Halfedge h;
-      std::array<Vector_3d, 3> corners;
-      double shape;
-    };
-    boost::container::small_vector<Triangle_term, 12> triangles;
+    boost::container::small_vector<double, 12> shape;
     double u = 0;
-    for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
-      if(!m_mesh.is_border(h))
-      {
-        const std::array<Vector_3d, 3> p = triangle_with(m_mesh.face(h), v, x);
-        triangles.push_back(Triangle_term{h, p, triangle_shape_term(p[0], p[1], p[2])});
-        u += triangles.back().shape;
-        if(!(u < bound))
-          return u;
-      }
-    u += data_energy(v, x, hint);
-    for(const Triangle_term& t : triangles)
+    for(const Star::Triangle& t : s.triangles)
+    {
+      std::array<Vector_3d, 3> p = t.corners;
+      p[t.slot] = x;
+      shape.push_back(triangle_shape_term(p[0], p[1], p[2]));
+      u += shape.back();
+      if(!(u < bound))
+        return u;
+    }
+    u += data_energy(s.v, x, hint);
+    for(std::size_t k = 0; k < s.triangles.size(); ++k)
     {
       if(!(u < bound))
         return u;
-      const double data = triangle_data_term(m_mesh.face(t.h), t.corners[0], t.corners[1], t.corners[2]);
+      std::array<Vector_3d, 3> p = s.triangles[k].corners;
+      p[s.triangles[k].slot] = x;
+      const double data = triangle_data_term(m_mesh.face(s.triangles[k].h), p[0], p[1], p[2]);
       if(record)
-        (*record)[std::size_t(t.h)] = t.shape + data;
+        (*record)[std::size_t(s.triangles[k].h)] = shape[k] + data;
       u += data;
     }
-    if(kind_of(v) == Vertex_kind::feature_vertex)
-      for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
-      {
-        const std::size_t i = m_feature_edge_slot[std::size_t(m_mesh.edge(h))];
-        if(i != Binary_graph_cut::none)
-          u += feature_edge_energy(i, x, position(m_mesh.source(h)));
-      }
+    for(const auto& e : s.feature_edges)
+      u += feature_edge_energy(e.first, x, e.second);
     return u;
+  }
+
+  double local_evidence(Vertex v, const Vector_3d& x, double bound = std::numeric_limits<double>::infinity()) const
+  {
+    return local_evidence(star(v), x, bound);
   }
 
   // Section 2.1's tracking: the closest reference vertex y_s0 by local search, and the nearest
@@ -788,9 +817,10 @@ private:
         link.emplace_back(position(m_mesh.target(m_mesh.next(h))), position(m_mesh.source(h)));
     }
     const double before = current_local_evidence(v);
+    const Star around = star(v);
 
     if(kind_of(v) == Vertex_kind::feature_vertex)
-      return propose_on_feature(v, x, link, before, temperature, greedy, rng, out, out_location, face_term);
+      return propose_on_feature(around, x, link, before, temperature, greedy, rng, out, out_location, face_term);
 
     const Local_frame& frame = m_reference.frame(m_state.closest[std::size_t(v)]);
     const double sigma = freedom_radius(temperature, ring_radius(x, link), frame.min_radius());
@@ -798,7 +828,7 @@ private:
       return false;
     Face face = Work_mesh::null_face(); // where the last candidate was brought onto the reference
     auto accept = [&](const Vector_3d& c) {
-      if(!((c - x).norm() <= sigma) || !(local_evidence(v, c, before, &face_term, face) < before))
+      if(!((c - x).norm() <= sigma) || !(local_evidence(around, c, before, &face_term, face) < before))
         return false;
       out = c;
       out_face = face;
@@ -835,7 +865,7 @@ private:
     const double step = 1e-3 * sigma;
     Vector_3d gradient;
     for(int a = 0; a < 3; ++a)
-      gradient[a] = (local_evidence(v, x + Vector_3d::Unit(a) * step) - before) / step;
+      gradient[a] = (local_evidence(around, x + Vector_3d::Unit(a) * step) - before) / step;
     if(!(gradient.norm() > 0) || !std::isfinite(gradient.norm()))
       return false;
     const Vector_3d descent = -gradient.normalized();
@@ -847,10 +877,11 @@ private:
 
   // Vertices on a feature slide along their reference polyline: the 1D Laplacian towards the
   // middle of their two feature neighbours, or a random (greedy: downhill) slide.
-  bool propose_on_feature(Vertex v, const Vector_3d& x, const Link& link, double before, double temperature,
+  bool propose_on_feature(const Star& around, const Vector_3d& x, const Link& link, double before, double temperature,
                           bool greedy, CGAL::Random& rng, Vector_3d& out, Location& out_location,
                           std::vector<double>& face_term) const
   {
+    const Vertex v = around.v;
     const Location here = m_state.location[std::size_t(v)];
     // The polyline is followed exactly, so its curvature does not limit the sphere.
     const double sigma = freedom_radius(temperature, ring_radius(x, link), 1.0);
@@ -859,7 +890,7 @@ private:
     auto accept = [&](const Vector_3d& displacement) {
       const Location l = m_polylines.move(here, displacement);
       const Vector_3d c = m_polylines.point(l);
-      if(!((c - x).norm() <= sigma) || (c - x).norm() == 0 || !(local_evidence(v, c, before, &face_term) < before))
+      if(!((c - x).norm() <= sigma) || (c - x).norm() == 0 || !(local_evidence(around, c, before, &face_term) < before))
         return false;
       out = c;
       out_location = l;
@@ -889,8 +920,8 @@ private:
     }
 
     const double step = 1e-3 * sigma;
-    const double forward = local_evidence(v, m_polylines.point(m_polylines.move(here, step * tangent)));
-    const double backward = local_evidence(v, m_polylines.point(m_polylines.move(here, -step * tangent)));
+    const double forward = local_evidence(around, m_polylines.point(m_polylines.move(here, step * tangent)));
+    const double backward = local_evidence(around, m_polylines.point(m_polylines.move(here, -step * tangent)));
     if(!(forward != backward))
       return false;
     const Vector_3d descent = forward < backward ? tangent : Vector_3d(-tangent);
