@@ -163,10 +163,13 @@ private:
   {
     const std::size_t block = 1024, number_of_blocks = (n + block - 1) / block;
     std::vector<std::vector<Face_pair> > found(number_of_blocks);
-    for_each_index(number_of_blocks, [&](std::size_t bi) {
-      for(std::size_t i = bi * block; i < (std::min)(n, (bi + 1) * block); ++i)
-        function(i, found[bi]);
-    });
+    for_each_index(
+      number_of_blocks,
+      [&](std::size_t bi) {
+        for(std::size_t i = bi * block; i < (std::min)(n, (bi + 1) * block); ++i)
+          function(i, found[bi]);
+      },
+      1);
     for(const std::vector<Face_pair>& pairs : found)
       out.insert(out.end(), pairs.begin(), pairs.end());
   }

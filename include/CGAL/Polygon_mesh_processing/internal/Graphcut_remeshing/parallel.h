@@ -24,14 +24,15 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Graphcut_remeshing {
 
-// function(i) for i in [0, n).
+// function(i) for i in [0, n), by tasks of at least `grain` indices (items that are blocks of
+// work already take a grain of 1: a range no larger than its grain is never split).
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename Function>
-void for_each_index(std::size_t n, const Function& function)
+void for_each_index(std::size_t n, const Function& function, std::size_t grain = 256)
 {
 #ifdef CGAL_LINKED_WITH_TBB
   if constexpr(std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value)
   {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         for(std::size_t i = range.begin(); i != range.end(); ++i)
                           function(i);
