@@ -219,13 +219,16 @@ private:
     {
       for(int f = 0; f < number_free; ++f)
         m_mapping[free_vars[f]] = static_cast<signed char>((mask >> f) & 1);
-      // Unmapped variables of other terms are not yet decided: count only this term.
+      // Unmapped variables of other terms are not yet decided: count only this term. The first
+      // mapping that makes it representable is as good as any.
       const int score = representable(t, m_mapping) ? 1 : 0;
       if(score > best_score)
       {
         best_score = score;
         best = mask;
       }
+      if(score == 1)
+        break;
     }
     for(int f = 0; f < number_free; ++f)
       m_mapping[free_vars[f]] = static_cast<signed char>((best >> f) & 1);

@@ -587,8 +587,7 @@ public:
         normals.push_back(area_vector(x, q, p));
       }
       const Vector_3d normal = m_reference.frame(m_state.closest[std::size_t(v)]).normal;
-      const double energy_here =
-        m_local_energy ? m_local_energy(v, x, std::numeric_limits<double>::infinity()) : 0;
+      double energy_here = std::numeric_limits<double>::quiet_NaN(); // once a move is acceptable
       auto try_move = [&](const Vector_3d& target) {
         Face hint = m_state.vertex_hint[std::size_t(v)];
         const Vector_3d y = m_reference.closest_point(x + tangential(target - x, normal), hint);
@@ -599,6 +598,8 @@ public:
         // Beyond the paper: a move that raises the local energy is not kept. Plain smoothing
         // undoes the fit of the relocation where the surface is curved (on fandisk it raised
         // the RMS distance by a third).
+        if(m_local_energy && std::isnan(energy_here))
+          energy_here = m_local_energy(v, x, std::numeric_limits<double>::infinity());
         if(m_local_energy &&
            !(m_local_energy(v, y, std::nextafter(energy_here, std::numeric_limits<double>::infinity())) <= energy_here))
           return false;

@@ -273,24 +273,34 @@ private:
     std::vector<Face> changed_faces; // those still in the mesh
     std::size_t number_changed = 0;
     if(m_reconnected)
-      for(std::size_t i = 0; i < nf; ++i)
-      {
+    {
+      for_each_index(nf, [&](std::size_t i) {
         const Face f(static_cast<Face::size_type>(i));
-        const bool removed = m_mesh.is_removed(f);
-        const std::array<Vertex, 3> t = removed ? no_triangle() : face_vertices(m_mesh, f);
-        if(t == m_triangles[i])
-          continue;
-        changed[i] = 1;
-        ++number_changed;
-        m_triangles[i] = t;
-        if(!removed)
-          changed_faces.push_back(f);
-      }
+        const std::array<Vertex, 3> t = m_mesh.is_removed(f) ? no_triangle() : face_vertices(m_mesh, f);
+        if(t != m_triangles[i])
+        {
+          changed[i] = 1;
+          m_triangles[i] = t;
+        }
+      });
+      for(std::size_t i = 0; i < nf; ++i)
+        if(changed[i])
+        {
+          ++number_changed;
+          if(!m_mesh.is_removed(Face(static_cast<Face::size_type>(i))))
+            changed_faces.push_back(Face(static_cast<Face::size_type>(i)));
+        }
+    }
     // Any vertex, not only the touched ones: a caller may have put others back where they were.
     const double nan = std::numeric_limits<double>::quiet_NaN();
     m_anchor.resize(nv, {{nan, nan, nan}}); // new vertices have drifted
+    std::vector<char> drift(nv, 0);
+    for_each_index(nv, [&](std::size_t i) {
+      const Vertex v(static_cast<Vertex::size_type>(i));
+      drift[i] = !m_mesh.is_removed(v) && drifted(v);
+    });
     for(Vertex v : m_mesh.vertices())
-      if(drifted(v))
+      if(drift[std::size_t(v)])
       {
         const auto& p = m_mesh.point(v);
         m_anchor[std::size_t(v)] = {{p.x(), p.y(), p.z()}};
@@ -570,14 +580,40 @@ private:
                                                        : (std::abs(n[1]) >= std::abs(n[2]) ? 1 : 2);
     const CGAL::Orientation positive = n[axis] > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
     const CGAL::Orientation negative = n[axis] > 0 ? CGAL::NEGATIVE : CGAL::POSITIVE;
+    using Point_2 = std::array<double, 2>;
     auto project = [&](Vertex u) {
       const auto& q = m_mesh.point(u);
-      return axis == 0 ? Epick::Point_2(q.y(), q.z())
-                       : (axis == 1 ? Epick::Point_2(q.z(), q.x()) : Epick::Point_2(q.x(), q.y()));
+      return axis == 0 ? Point_2{{q.y(), q.z()}} : (axis == 1 ? Point_2{{q.z(), q.x()}} : Point_2{{q.x(), q.y()}});
     };
-    const Epick::Point_2 o = project(v);
+    const Point_2 o = project(v);
+    boost::container::small_vector<std::array<Point_2, 2>, 16> rim;
+    // All orientations are of (o, a, b) with a and b on the rim: one error bound of CGAL's static
+    // filter for orientation_2, from the largest coordinate differences to o, serves them all.
+    double max_x = 0, max_y = 0;
     for(const auto& t : fan)
-      if(CGAL::orientation(o, project(t.second[0]), project(t.second[1])) != positive)
+    {
+      rim.push_back({{project(t.second[0]), project(t.second[1])}});
+      for(const Point_2& q : rim.back())
+      {
+        max_x = (std::max)(max_x, std::abs(q[0] - o[0]));
+        max_y = (std::max)(max_y, std::abs(q[1] - o[1]));
+      }
+    }
+    const bool filtered = max_x > 1e-146 && max_y > 1e-146 && max_x < 1e153 && max_y < 1e153;
+    const double bound = 8.8872057372592798e-16 * max_x * max_y;
+    auto orientation = [&](const Point_2& a, const Point_2& b) {
+      if(filtered)
+      {
+        const double det = (a[0] - o[0]) * (b[1] - o[1]) - (b[0] - o[0]) * (a[1] - o[1]);
+        if(det > bound)
+          return CGAL::POSITIVE;
+        if(det < -bound)
+          return CGAL::NEGATIVE;
+      }
+      return CGAL::orientation(Epick::Point_2(o[0], o[1]), Epick::Point_2(a[0], a[1]), Epick::Point_2(b[0], b[1]));
+    };
+    for(const auto& r : rim)
+      if(orientation(r[0], r[1]) != positive)
         return false;
     auto sectors_at = [&](Vertex u) {
       std::size_t k = 0;
@@ -585,20 +621,20 @@ private:
         k += (t.second[0] == u) + (t.second[1] == u);
       return k;
     };
-    Vertex start = fan[0].second[0];
-    for(const auto& t : fan)
-      if(sectors_at(t.second[0]) == 1)
+    std::size_t start = 0; // the rim vertex rim[start][0]
+    for(std::size_t k = 0; k < fan.size(); ++k)
+      if(sectors_at(fan[k].second[0]) == 1)
       {
-        start = t.second[0];
+        start = k;
         break;
       }
-    if(sectors_at(start) > 2)
+    const Vertex start_vertex = fan[start].second[0];
+    if(sectors_at(start_vertex) > 2)
       return false;
-    const Epick::Point_2 s = project(start);
-    for(const auto& t : fan)
-      if(t.second[0] != start && t.second[1] != start &&
-         CGAL::orientation(o, project(t.second[0]), s) != negative &&
-         CGAL::orientation(o, s, project(t.second[1])) != negative)
+    const Point_2 s = rim[start][0];
+    for(std::size_t k = 0; k < fan.size(); ++k)
+      if(fan[k].second[0] != start_vertex && fan[k].second[1] != start_vertex &&
+         orientation(rim[k][0], s) != negative && orientation(s, rim[k][1]) != negative)
         return false;
     return true;
   }
