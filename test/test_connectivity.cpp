@@ -933,10 +933,11 @@ TEST(Triangle_intersections, AfterConnectivityChangesAsCgalFindsThem)
 {
   // Rounds of a few flips, splits and collapses and moves, small and beyond the margin of the
   // candidate list, which is updated for the changed triangles; one round in eight changes a
-  // quarter of the edges, and the list is made again.
+  // quarter of the edges, and the list is made again. A round that leaves a degenerate triangle,
+  // which the remesher never makes and exact predicates are not asked about, is undone.
   const std::vector<std::pair<std::string, Mesh> > meshes = {
     {"sphere", make_sphere(3)}, {"flat grid", flat_grid()}, {"overlapping spheres", overlapping_spheres()}};
-  std::size_t found_some = 0, sound_found = 0;
+  std::size_t found_some = 0, checked = 0;
   for(const auto& named : meshes)
   {
     SCOPED_TRACE(named.first);
@@ -963,13 +964,17 @@ TEST(Triangle_intersections, AfterConnectivityChangesAsCgalFindsThem)
         else if(kind == 1)
         {
           const auto p = w.point(w.source(hh)), q = w.point(w.target(hh));
-          // n goes from source(hh) to the new vertex, hh now from there to its old target.
+          // n goes from source(hh) to the new vertex, hh now from there to its old target. The
+          // new vertex is off the edge: a later flip may make a triangle of the edge's halves.
           const auto n = CGAL::Euler::split_edge(hh, w);
-          w.point(w.target(n)) = CGAL::midpoint(p, q);
+          const auto m = CGAL::midpoint(p, q);
+          const double r = 0.05 * h;
+          w.point(w.target(n)) = GR::Work_kernel::Point_3(m.x() + r * rng.get_double(-1, 1), m.y() + r * rng.get_double(-1, 1),
+                                                          m.z() + r * rng.get_double(-1, 1));
           CGAL::Euler::split_face(n, w.next(w.next(n)), w);
-          const auto m = w.opposite(hh); // into the new vertex, on the other side
-          if(!w.is_border(m))
-            CGAL::Euler::split_face(m, w.next(w.next(m)), w);
+          const auto o = w.opposite(hh); // into the new vertex, on the other side
+          if(!w.is_border(o))
+            CGAL::Euler::split_face(o, w.next(w.next(o)), w);
         }
         else if(kind == 2 && CGAL::Euler::does_satisfy_link_condition(e, w))
           CGAL::Euler::collapse_edge(e, w);
@@ -993,25 +998,20 @@ TEST(Triangle_intersections, AfterConnectivityChangesAsCgalFindsThem)
           for(auto v : GR::face_vertices(w, f))
             touched[std::size_t(v)] = 1;
       ASSERT_TRUE(CGAL::is_valid_polygon_mesh(w));
-      intersections.connectivity_changed();
-      const std::vector<Face_pair> found = intersections.pairs_touching(touched);
-      // As a list made anew finds them; and as CGAL does, but for the triangles that random
-      // collapses made degenerate, which CGAL and we see differently.
-      EXPECT_EQ(found, GR::Triangle_intersections(w).pairs_touching(touched));
-      std::vector<char> degenerate(w.num_faces(), 0);
+      bool degenerate = false;
       for(auto f : w.faces())
       {
         const auto t = GR::face_vertices(w, f);
         auto p = [&w](Work::Vertex_index v) { return Point(w.point(v).x(), w.point(v).y(), w.point(v).z()); };
-        degenerate[std::size_t(f)] = CGAL::collinear(p(t[0]), p(t[1]), p(t[2]));
+        degenerate = degenerate || CGAL::collinear(p(t[0]), p(t[1]), p(t[2]));
       }
-      auto sound = [&](const std::vector<Face_pair>& pairs) {
-        std::vector<Face_pair> kept;
-        for(const Face_pair& p : pairs)
-          if(!degenerate[std::size_t(p.first)] && !degenerate[std::size_t(p.second)])
-            kept.push_back(p);
-        return kept;
-      };
+      if(degenerate)
+      {
+        w = before; // as the list last saw it
+        continue;
+      }
+      intersections.connectivity_changed();
+      const std::vector<Face_pair> found = intersections.pairs_touching(touched);
       std::vector<Face_pair> expected;
       for(const Face_pair& p : cgal_self_intersections(w))
       {
@@ -1022,11 +1022,12 @@ TEST(Triangle_intersections, AfterConnectivityChangesAsCgalFindsThem)
         if(incident)
           expected.push_back(p);
       }
-      EXPECT_EQ(sound(found), sound(expected));
-      sound_found += sound(found).empty() ? 0 : 1;
+      EXPECT_EQ(found, expected);
+      EXPECT_EQ(found, GR::Triangle_intersections(w).pairs_touching(touched)); // as a list made anew
+      ++checked;
       found_some += found.empty() ? 0 : 1;
     }
   }
   EXPECT_GT(found_some, 20u);
-  EXPECT_GT(sound_found, 20u);
+  EXPECT_GT(checked, 120u);
 }
