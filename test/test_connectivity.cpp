@@ -813,6 +813,22 @@ std::vector<Face_pair> cgal_self_intersections(const Work& w)
   return pairs;
 }
 
+// CGAL's pairs with a triangle incident to a vertex v with touched[v].
+std::vector<Face_pair> cgal_self_intersections_touching(const Work& w, const std::vector<char>& touched)
+{
+  std::vector<Face_pair> pairs;
+  for(const Face_pair& p : cgal_self_intersections(w))
+  {
+    bool incident = false;
+    for(auto f : {p.first, p.second})
+      for(auto v : GR::face_vertices(w, f))
+        incident = incident || touched[std::size_t(v)];
+    if(incident)
+      pairs.push_back(p);
+  }
+  return pairs;
+}
+
 // Two spheres that overlap, in one mesh: pairs that share no vertex.
 Mesh overlapping_spheres()
 {
@@ -909,16 +925,7 @@ TEST(Triangle_intersections, AfterMovesOfAFewVerticesAsCgalFindsThem)
           w.point(v) = GR::Work_kernel::Point_3(p.x() + step * rng.get_double(-1, 1), p.y() + step * rng.get_double(-1, 1),
                                                 planar ? p.z() : p.z() + step * rng.get_double(-1, 1));
         }
-      std::vector<Face_pair> expected;
-      for(const Face_pair& p : cgal_self_intersections(w))
-      {
-        bool incident = false;
-        for(auto f : {p.first, p.second})
-          for(auto v : GR::face_vertices(w, f))
-            incident = incident || touched[std::size_t(v)];
-        if(incident)
-          expected.push_back(p);
-      }
+      const std::vector<Face_pair> expected = cgal_self_intersections_touching(w, touched);
       EXPECT_EQ(intersections.pairs_touching(touched), expected);
       found_some += expected.empty() ? 0 : 1;
       if(round % 2 == 1)
@@ -979,7 +986,6 @@ TEST(Triangle_intersections, AfterConnectivityChangesAsCgalFindsThem)
         else if(kind == 2 && CGAL::Euler::does_satisfy_link_condition(e, w))
           CGAL::Euler::collapse_edge(e, w);
       }
-      std::vector<char> touched(w.num_vertices(), 0);
       for(auto v : w.vertices())
         if(rng.get_double() < 0.03)
         {
@@ -989,14 +995,7 @@ TEST(Triangle_intersections, AfterConnectivityChangesAsCgalFindsThem)
                                                 p.z() + step * rng.get_double(-1, 1));
         }
       // Touched: new or moved vertices, and the vertices of new or reconnected triangles.
-      for(auto v : w.vertices())
-        touched[std::size_t(v)] = std::size_t(v) >= before.num_vertices() || before.is_removed(v) ||
-                                  before.point(v) != w.point(v);
-      for(auto f : w.faces())
-        if(std::size_t(f) >= before.num_faces() || before.is_removed(f) ||
-           GR::face_vertices(before, f) != GR::face_vertices(w, f))
-          for(auto v : GR::face_vertices(w, f))
-            touched[std::size_t(v)] = 1;
+      const std::vector<char> touched = GR::changed_vertices(before, w);
       ASSERT_TRUE(CGAL::is_valid_polygon_mesh(w));
       bool degenerate = false;
       for(auto f : w.faces())
@@ -1012,16 +1011,7 @@ TEST(Triangle_intersections, AfterConnectivityChangesAsCgalFindsThem)
       }
       intersections.connectivity_changed();
       const std::vector<Face_pair> found = intersections.pairs_touching(touched);
-      std::vector<Face_pair> expected;
-      for(const Face_pair& p : cgal_self_intersections(w))
-      {
-        bool incident = false;
-        for(auto f : {p.first, p.second})
-          for(auto v : GR::face_vertices(w, f))
-            incident = incident || touched[std::size_t(v)];
-        if(incident)
-          expected.push_back(p);
-      }
+      const std::vector<Face_pair> expected = cgal_self_intersections_touching(w, touched);
       EXPECT_EQ(found, expected);
       EXPECT_EQ(found, GR::Triangle_intersections(w).pairs_touching(touched)); // as a list made anew
       ++checked;

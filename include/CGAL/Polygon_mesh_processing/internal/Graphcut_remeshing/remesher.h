@@ -448,7 +448,7 @@ public:
       // The mesh had no new intersections before the pass: only triangles it changed or moved
       // can have made some.
       m_intersections.connectivity_changed();
-      const std::vector<char> changed = changed_vertices(mesh_before);
+      const std::vector<char> changed = changed_vertices(mesh_before, m_mesh);
       const std::vector<std::pair<Face, Face> > fresh = new_self_intersections(&changed);
 #ifdef CGAL_GRAPHCUT_REMESHING_VERBOSE
       std::cerr << "connectivity pass, attempt " << attempt << ": " << counts.flips << " flips, "
@@ -496,21 +496,6 @@ private:
 
   std::array<Vertex, 3> face_vertices(Face f) const { return Graphcut_remeshing::face_vertices(m_mesh, f); }
 
-  // By vertex of the working mesh: whether it is new, moved or on a triangle that is new or on
-  // other vertices since the mesh was `before`.
-  std::vector<char> changed_vertices(const Work_mesh& before) const
-  {
-    std::vector<char> changed(m_mesh.num_vertices(), 0);
-    for(Vertex v : m_mesh.vertices())
-      changed[std::size_t(v)] = std::size_t(v) >= before.num_vertices() || before.is_removed(v) ||
-                                before.point(v) != m_mesh.point(v);
-    for(Face f : m_mesh.faces())
-      if(std::size_t(f) >= before.num_faces() || before.is_removed(f) ||
-         Graphcut_remeshing::face_vertices(before, f) != face_vertices(f))
-        for(Vertex v : face_vertices(f))
-          changed[std::size_t(v)] = 1;
-    return changed;
-  }
 
   // The halfedges of f to its vertices, in the order of face_vertices(f).
   std::array<Halfedge, 3> halfedges_to_vertices(Face f) const
@@ -808,16 +793,15 @@ private:
     if(kind_of(v) == Vertex_kind::fixed_vertex)
       return false;
     const Vector_3d x = position(v);
-    Link link;
-    boost::container::small_vector<Vector_3d, 12> ring;
-    for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
-    {
-      ring.push_back(position(m_mesh.source(h)));
-      if(!m_mesh.is_border(h))
-        link.emplace_back(position(m_mesh.target(m_mesh.next(h))), position(m_mesh.source(h)));
-    }
-    const double before = current_local_evidence(v);
     const Star around = star(v);
+    // The link from the star: around a triangle's halfedge to v come target(next(h)), then source(h).
+    Link link;
+    for(const Star::Triangle& t : around.triangles)
+      link.emplace_back(t.corners[(t.slot + 1) % 3], t.corners[(t.slot + 2) % 3]);
+    boost::container::small_vector<Vector_3d, 12> ring; // border neighbours too
+    for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      ring.push_back(position(m_mesh.source(h)));
+    const double before = current_local_evidence(v);
 
     if(kind_of(v) == Vertex_kind::feature_vertex)
       return propose_on_feature(around, x, link, before, temperature, greedy, rng, out, out_location, face_term);

@@ -11,6 +11,8 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <array>
+#include <cstddef>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -26,6 +28,21 @@ std::array<typename Mesh::Vertex_index, 3> face_vertices(const Mesh& m, typename
 {
   const auto h = m.halfedge(f);
   return {{m.source(h), m.target(h), m.target(m.next(h))}};
+}
+
+// By vertex of `after`: whether it is new, moved, or on a triangle that is new or on other
+// vertices since the mesh was `before` (the same mesh, before local changes, indices kept).
+inline std::vector<char> changed_vertices(const Work_mesh& before, const Work_mesh& after)
+{
+  std::vector<char> changed(after.num_vertices(), 0);
+  for(Work_mesh::Vertex_index v : after.vertices())
+    changed[std::size_t(v)] = std::size_t(v) >= before.num_vertices() || before.is_removed(v) ||
+                              before.point(v) != after.point(v);
+  for(Work_mesh::Face_index f : after.faces())
+    if(std::size_t(f) >= before.num_faces() || before.is_removed(f) || face_vertices(before, f) != face_vertices(after, f))
+      for(Work_mesh::Vertex_index v : face_vertices(after, f))
+        changed[std::size_t(v)] = 1;
+  return changed;
 }
 
 } // namespace Graphcut_remeshing
