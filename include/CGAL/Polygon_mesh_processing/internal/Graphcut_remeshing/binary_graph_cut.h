@@ -234,21 +234,70 @@ private:
       m_mapping[free_vars[f]] = static_cast<signed char>((best >> f) & 1);
   }
 
+  // The pairs of distinct variables that share a term, by the smaller variable: the larger ones
+  // of i are other[start[i]], ..., other[start[i + 1] - 1], increasing. Each pairwise coefficient
+  // of the graph is on one of them. Returns the number of terms of three variables.
+  std::size_t collect_pairs(std::vector<Index>& start, std::vector<Index>& other) const
+  {
+    const std::size_t n = m_unary.size();
+    std::size_t number_of_triples = 0;
+    auto for_each_pair = [&](const auto& function) {
+      for(const Term& t : m_terms)
+        for(int p = 0; p < (t.variables[2] == no_index ? 1 : 3); ++p)
+        {
+          const Index u = t.variables[pairs[p][0]], v = t.variables[pairs[p][1]];
+          if(u != v)
+            function((std::min)(u, v), (std::max)(u, v));
+        }
+    };
+    std::vector<std::size_t> first(n + 1, 0);
+    for_each_pair([&](Index i, Index) { ++first[i + 1]; });
+    for(std::size_t i = 0; i < n; ++i)
+      first[i + 1] += first[i];
+    other.resize(first[n]);
+    {
+      std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+      for_each_pair([&](Index i, Index j) { other[fill[i]++] = j; });
+    }
+    // Each variable's list sorted and without repeats, moved down over the repeats removed.
+    start.assign(n + 1, 0);
+    std::size_t out = 0;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const auto b = other.begin() + std::ptrdiff_t(first[i]), e = other.begin() + std::ptrdiff_t(first[i + 1]);
+      std::sort(b, e);
+      const auto last = std::unique(b, e);
+      start[i] = Index(out);
+      out = std::size_t(std::copy(b, last, other.begin() + std::ptrdiff_t(out)) - other.begin());
+    }
+    start[n] = Index(out);
+    other.resize(out);
+    other.shrink_to_fit();
+    for(const Term& t : m_terms)
+      if(t.variables[2] != no_index)
+        ++number_of_triples;
+    return number_of_triples;
+  }
+
   // Graph construction in the mapped variables y = x xor m. A polynomial in x becomes one in y by
   // substituting x = 1 - y for mapped variables; we accumulate unary and pairwise coefficients over
   // y, add auxiliary nodes for cubic terms, bound supermodular pairs, then cut.
   std::vector<char> cut()
   {
     const std::size_t n = m_unary.size();
-    std::vector<double> unary(n, 0.); // over y
-    // Pairwise coefficients over y, on (min, max) of the variables, in the order they come.
-    struct Pair { Index i, j; double c; };
-    std::vector<Pair> pairwise;
-    pairwise.reserve(3 * m_terms.size());
+    // Variables and their graph nodes in 32 bits: the terms and arcs of a large mesh are many.
+    CGAL_precondition(n + m_terms.size() < std::size_t(no_index));
+    std::vector<double> unary(n, 0.); // over y, then by node
+    // The pairwise coefficients over y, one per pair of collect_pairs(), each the sum of its
+    // contributions in the order they come.
+    std::vector<Index> pair_start, pair_other;
+    const std::size_t number_of_triples = collect_pairs(pair_start, pair_other);
+    std::vector<double> pairwise(pair_other.size(), 0.);
     // An auxiliary node w of a reduced cubic term: unary cost `unary` when w = 1, and a
     // (submodular, negative) coefficient `pairwise` on w * y for each of the three variables.
     struct Aux { std::array<Index, 3> variables; double unary; double pairwise; };
     std::vector<Aux> aux;
+    aux.reserve(number_of_triples);
 
     auto add_linear = [&](Index i, double c) {
       // c * x_i with x_i = m ? 1 - y_i : y_i
@@ -256,7 +305,11 @@ private:
       else unary[i] += c;
     };
     auto add_pair = [&](Index i, Index j, double c) {
-      pairwise.push_back({(std::min)(i, j), (std::max)(i, j), c});
+      const Index a = (std::min)(i, j), b = (std::max)(i, j);
+      Index k = pair_start[a];
+      while(pair_other[k] != b)
+        ++k;
+      pairwise[k] += c;
     };
     auto add_quadratic = [&](Index i, Index j, double c) {
       if(i == j) { add_linear(i, c); return; }
@@ -328,93 +381,63 @@ private:
       }
     }
 
-    // The coefficients of each pair summed, in the order they came: stable counting sorts on the
-    // second variable, then on the first (a radix sort: by first, then second, ties in order).
-    {
-      std::vector<Pair> sorted(pairwise.size());
-      std::vector<std::size_t> start(n + 1);
-      auto counting_sort = [&](const std::vector<Pair>& from, std::vector<Pair>& to, auto key) {
-        std::fill(start.begin(), start.end(), 0);
-        for(const Pair& p : from)
-          ++start[key(p) + 1];
-        for(std::size_t i = 0; i < n; ++i)
-          start[i + 1] += start[i];
-        for(const Pair& p : from)
-          to[start[key(p)]++] = p;
-      };
-      counting_sort(pairwise, sorted, [](const Pair& p) { return p.j; });
-      counting_sort(sorted, pairwise, [](const Pair& p) { return p.i; });
-      sorted.swap(pairwise);
-      pairwise = std::vector<Pair>();
-      std::size_t out = 0;
-      for(std::size_t k = 0; k < sorted.size();)
-      {
-        Pair sum = sorted[k];
-        for(++k; k < sorted.size() && sorted[k].i == sum.i && sorted[k].j == sum.j; ++k)
-          sum.c += sorted[k].c;
-        sorted[out++] = sum;
-      }
-      sorted.resize(out);
-      pairwise.swap(sorted);
-    }
-
     // Current labelling in y: x = 0 for all, so y_i = m_i. Supermodular pairs (coefficient
-    // a > 0) are bounded by linear terms exact at y0; the submodular ones are kept.
-    {
-      std::size_t out = 0;
-      for(const Pair& p : pairwise)
+    // a > 0) are bounded by linear terms exact at y0; the submodular ones are kept (a pair whose
+    // coefficient is not negative has no arc).
+    for(Index i = 0; i < Index(n); ++i)
+      for(Index k = pair_start[i]; k < pair_start[i + 1]; ++k)
       {
-        const double a = p.c;
-        if(a < 0)
-          pairwise[out++] = p;
+        const Index j = pair_other[k];
+        const double a = pairwise[k];
         if(!(a > 0))
           continue;
-        const bool yi = m_mapping[p.i] != 0, yj = m_mapping[p.j] != 0;
+        const bool yi = m_mapping[i] != 0, yj = m_mapping[j] != 0;
         if(yi == yj)
         {
-          unary[p.i] += a / 2; // a yi yj <= a (yi + yj) / 2, exact at (0,0) and (1,1)
-          unary[p.j] += a / 2;
+          unary[i] += a / 2; // a yi yj <= a (yi + yj) / 2, exact at (0,0) and (1,1)
+          unary[j] += a / 2;
         }
         else if(yi)
-          unary[p.j] += a;     // a yi yj <= a yj, exact at yj = 0
+          unary[j] += a;     // a yi yj <= a yj, exact at yj = 0
         else
-          unary[p.i] += a;     // a yi yj <= a yi, exact at yi = 0
+          unary[i] += a;     // a yi yj <= a yi, exact at yi = 0
       }
-      pairwise.resize(out);
-    }
 
     // The s-t graph: node index = variable, then auxiliary nodes. A node on the sink side has
     // label 1. A pairwise a yi yj with a < 0 is a yi + (-a) yi (1 - yj): an arc j -> i of capacity
     // -a. A positive unary is paid when the node is on the sink side (an arc from the source), a
     // negative one when it is on the source side (an arc to the sink).
     const std::size_t number_of_nodes = n + aux.size();
-    CGAL_precondition(number_of_nodes < std::size_t(no_index));
-    std::vector<double> node_unary(number_of_nodes, 0.);
-    for(std::size_t i = 0; i < n; ++i)
-      node_unary[i] = unary[i];
-    for(const Pair& p : pairwise)
-      node_unary[p.i] += p.c;
+    std::vector<double>& node_unary = unary;
+    node_unary.resize(number_of_nodes, 0.);
+    for(Index i = 0; i < Index(n); ++i)
+      for(Index k = pair_start[i]; k < pair_start[i + 1]; ++k)
+        if(pairwise[k] < 0)
+          node_unary[i] += pairwise[k];
     for(std::size_t q = 0; q < aux.size(); ++q)
     {
       node_unary[n + q] += aux[q].unary;
       for(int a = 0; a < 3; ++a)
         node_unary[n + q] += aux[q].pairwise; // w y_v = w - w (1 - y_v)
     }
-    unary = std::vector<double>();
     Max_flow flow(number_of_nodes);
     for(std::size_t i = 0; i < number_of_nodes; ++i)
       flow.add_terminal_capacities(Index(i), (std::max)(node_unary[i], 0.), (std::max)(-node_unary[i], 0.));
     node_unary = std::vector<double>();
     auto for_each_arc = [&](const auto& arc) { // arc(tail, head, capacity), capacity > 0
-      for(const Pair& p : pairwise)
-        arc(p.j, p.i, -p.c);
+      for(Index i = 0; i < Index(n); ++i)
+        for(Index k = pair_start[i]; k < pair_start[i + 1]; ++k)
+          if(pairwise[k] < 0)
+            arc(pair_other[k], i, -pairwise[k]);
       for(std::size_t q = 0; q < aux.size(); ++q)
         for(Index v : aux[q].variables)
           arc(v, Index(n + q), -aux[q].pairwise);
     };
     for_each_arc([&](Index u, Index v, double) { flow.count_arc(u, v); });
     for_each_arc([&](Index u, Index v, double c) { flow.add_arc(u, v, c, 0.); });
-    pairwise = std::vector<Pair>();
+    pair_start = std::vector<Index>();
+    pair_other = std::vector<Index>();
+    pairwise = std::vector<double>();
     aux = std::vector<Aux>();
     flow.solve();
 
