@@ -76,6 +76,8 @@ public:
   // since the mesh was last known to be without new intersections.
   std::vector<Face_pair> pairs_touching(const std::vector<char>& touched)
   {
+    // Entries keep a face index in 29 bits.
+    CGAL_precondition(m_mesh.num_faces() < (std::size_t(1) << 29));
     if(m_valid)
       update_candidates();
     m_reconnected = false;
@@ -103,20 +105,17 @@ public:
         fan_pairs(v, query, found);
     });
     // Triangles that share no vertex: the candidates with a queried triangle, whose boxes overlap
-    // (each box made once: a triangle has a few candidates).
-    m_boxes.resize(nf);
-    for_each_index(nf, [&](std::size_t i) {
-      const Face f(static_cast<Face::size_type>(i));
-      if(!m_mesh.is_removed(f))
-        m_boxes[i] = box(f);
-    });
-    collect_by_blocks(m_candidates.size(), out, [&](std::size_t i, std::vector<Face_pair>& found) {
-      const Face_pair& p = m_candidates[i];
-      if((query[std::size_t(p.first)] || query[std::size_t(p.second)]) &&
-         CGAL::do_overlap(m_boxes[std::size_t(p.first)], m_boxes[std::size_t(p.second)]) &&
-         intersect(p.first, p.second))
-        found.push_back(p);
-    });
+    // (each box made once, in single precision: a triangle has a few candidates).
+    {
+      std::vector<Small_box> boxes(nf);
+      for_each_face([&](Face f) { boxes[std::size_t(f)] = current_box(f); });
+      collect_by_blocks(m_candidates.size(), out, [&](std::size_t i, std::vector<Face_pair>& found) {
+        const Face_pair& p = m_candidates[i];
+        if((query[std::size_t(p.first)] || query[std::size_t(p.second)]) &&
+           overlap(boxes[std::size_t(p.first)], boxes[std::size_t(p.second)]) && intersect(p.first, p.second))
+          found.push_back(p);
+      });
+    }
     // A pair with two common vertices comes from both fans.
     sort_pairs(out);
     out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -127,11 +126,16 @@ private:
   using Cell = std::array<long long, 3>;
   using Small_box = std::array<float, 6>; // low x, y, z, high x, y, z
 
-  // A triangle listed in a grid cell, with the axes on which the cell is its box's first.
+  // A triangle listed in a grid cell, with the axes on which the cell is its box's first, in
+  // 32 bits: a large mesh has tens of millions of entries.
   struct Entry
   {
-    Face face;
-    unsigned char low;
+    std::uint32_t bits; // face index * 8 + low-cell axes
+
+    Entry(Face f, unsigned char low) : bits(std::uint32_t(std::size_t(f) << 3 | low)) {}
+    Entry() : bits(0) {}
+    Face face() const { return Face(static_cast<Face::size_type>(bits >> 3)); }
+    unsigned char low() const { return static_cast<unsigned char>(bits & 7); }
   };
 
   Point point(Vertex v) const
@@ -228,13 +232,13 @@ private:
     // come by their low-cell axes: only the groups whose axes cover all three are paired. Each
     // entry is read with a copy of its box, so that a bucket is one sweep of memory.
     std::vector<Small_box> listed_box(m_entries.size());
-    for_each_index(m_entries.size(), [&](std::size_t i) { listed_box[i] = m_face_box[std::size_t(m_entries[i].face)]; });
+    for_each_index(m_entries.size(), [&](std::size_t i) { listed_box[i] = m_face_box[std::size_t(m_entries[i].face())]; });
     collect_by_blocks(m_buckets, m_candidates, [&](std::size_t k, std::vector<Face_pair>& found) {
       std::array<std::size_t, 9> group; // the entries of low-cell axes m: [group[m], group[m + 1])
       for(std::size_t m = 0, i = m_start[k]; m < 8; ++m)
       {
         group[m] = i;
-        while(i < m_start[k + 1] && m_entries[i].low == m)
+        while(i < m_start[k + 1] && m_entries[i].low() == m)
           ++i;
       }
       group[8] = m_start[k + 1];
@@ -244,7 +248,7 @@ private:
             for(std::size_t i = group[ga]; i < group[ga + 1]; ++i)
               for(std::size_t j = (ga == gb ? i + 1 : group[gb]); j < group[gb + 1]; ++j)
               {
-                const Face fi = m_entries[i].face, fj = m_entries[j].face;
+                const Face fi = m_entries[i].face(), fj = m_entries[j].face();
                 if(fi != fj && overlap(listed_box[i], listed_box[j]) && !share_vertex(fi, fj))
                   found.push_back(fi < fj ? Face_pair(fi, fj) : Face_pair(fj, fi));
               }
@@ -344,12 +348,12 @@ private:
       std::size_t i = m_start[b], j = added_start[b];
       for(;;)
       {
-        while(i < m_start[b + 1] && changed[std::size_t(m_entries[i].face)])
+        while(i < m_start[b + 1] && changed[std::size_t(m_entries[i].face())])
           ++i;
         const bool old_left = i < m_start[b + 1], added_left = j < added_start[b + 1];
         if(!old_left && !added_left)
           break;
-        if(old_left && (!added_left || m_entries[i].low <= added[j].low))
+        if(old_left && (!added_left || m_entries[i].low() <= added[j].low()))
           merged.push_back(m_entries[i++]);
         else
           merged.push_back(added[j++]);
@@ -375,8 +379,8 @@ private:
         const std::size_t b = bucket(c);
         for(std::size_t k = m_start[b]; k < m_start[b + 1]; ++k)
         {
-          const Face e = m_entries[k].face;
-          if((low | m_entries[k].low) != 7 || e == d || (changed[std::size_t(e)] && e < d))
+          const Face e = m_entries[k].face();
+          if((low | m_entries[k].low()) != 7 || e == d || (changed[std::size_t(e)] && e < d))
             continue;
           if(overlap(a, m_face_box[std::size_t(e)]) && !share_vertex(d, e))
             out.push_back(d < e ? Face_pair(d, e) : Face_pair(e, d));
@@ -423,7 +427,7 @@ private:
     for_each_index(n, [&](std::size_t i) {
       std::size_t k = offset[i];
       for_each_cell(m_face_box[std::size_t(faces[i])], [&](const Cell& c, unsigned char low) {
-        unsorted[k++] = Cell_entry{std::uint32_t(bucket(c)), Entry{faces[i], low}};
+        unsorted[k++] = Cell_entry{std::uint32_t(bucket(c)), Entry(faces[i], low)};
       });
     });
     offset = std::vector<std::size_t>();
@@ -431,11 +435,11 @@ private:
     {
       std::array<std::size_t, 9> first{};
       for(const Cell_entry& e : unsorted)
-        ++first[e.entry.low + 1];
+        ++first[e.entry.low() + 1];
       for(int m = 0; m < 8; ++m)
         first[m + 1] += first[m];
       for(const Cell_entry& e : unsorted)
-        by_low[first[e.entry.low]++] = e;
+        by_low[first[e.entry.low()]++] = e;
     }
     unsorted = std::vector<Cell_entry>();
     start.assign(m_buckets + 1, 0);
@@ -449,25 +453,44 @@ private:
       entries[fill[e.bucket]++] = e.entry;
   }
 
-  // The box of f's vertices at their anchors, grown by the margin, in single precision rounded
-  // outwards: it holds f for as long as no vertex drifts farther than the margin.
+  // The box of f's vertices at their anchors, grown by the margin: it holds f for as long as no
+  // vertex drifts farther than the margin.
   Small_box grown_box(Face f) const
+  {
+    return small_box(f, [&](Vertex v) { return m_anchor[std::size_t(v)]; }, m_margin);
+  }
+
+  // The box of f's vertices where they are.
+  Small_box current_box(Face f) const
+  {
+    return small_box(f, [&](Vertex v) {
+      const auto& p = m_mesh.point(v);
+      return std::array<double, 3>{{p.x(), p.y(), p.z()}};
+    }, 0.);
+  }
+
+  // The box of f's vertices at place(v), grown by `margin`, in single precision rounded outwards.
+  template <typename Place>
+  Small_box small_box(Face f, const Place& place, double margin) const
   {
     std::array<double, 3> low, high;
     low.fill(std::numeric_limits<double>::infinity());
     high.fill(-std::numeric_limits<double>::infinity());
     for(Vertex v : m_triangles[std::size_t(f)])
+    {
+      const std::array<double, 3> p = place(v);
       for(int a = 0; a < 3; ++a)
       {
-        low[a] = (std::min)(low[a], m_anchor[std::size_t(v)][a]);
-        high[a] = (std::max)(high[a], m_anchor[std::size_t(v)][a]);
+        low[a] = (std::min)(low[a], p[a]);
+        high[a] = (std::max)(high[a], p[a]);
       }
+    }
     const float inf = std::numeric_limits<float>::infinity();
     Small_box b;
     for(int a = 0; a < 3; ++a)
     {
-      b[a] = std::nextafter(float(low[a] - m_margin), -inf);
-      b[a + 3] = std::nextafter(float(high[a] + m_margin), inf);
+      b[a] = std::nextafter(float(low[a] - margin), -inf);
+      b[a + 3] = std::nextafter(float(high[a] + margin), inf);
     }
     return b;
   }
@@ -700,7 +723,6 @@ private:
   std::vector<std::array<Vertex, 3> > m_triangles; // by face: its vertices in the grid (or nulls)
   std::vector<std::array<double, 3> > m_anchor;    // by vertex: where its boxes were grown around
   std::vector<Face_pair> m_candidates;             // sorted
-  std::vector<CGAL::Bbox_3> m_boxes;               // by face, at the last check
 };
 
 } // namespace Graphcut_remeshing
