@@ -242,47 +242,58 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
   // per vertex of an iteration flat on large meshes.
   std::vector<vertex_descriptor> input_vertices;
   std::vector<GR::Vector_3d> input_points;
+  input_vertices.reserve(num_vertices(tmesh));
+  input_points.reserve(num_vertices(tmesh));
   for(vertex_descriptor v : vertices(tmesh))
   {
     input_vertices.push_back(v);
     input_points.push_back(GR::to_vector(get(vpm, v)));
   }
   const GR::Unit_box_normalization normalization(input_points);
-  std::vector<GR::Work_kernel::Point_3> unit_points;
-  for(const GR::Vector_3d& q : input_points)
-  {
-    const GR::Vector_3d p = normalization.to_unit(q);
-    unit_points.emplace_back(p.x(), p.y(), p.z());
-  }
-  std::vector<std::size_t> order(input_vertices.size());
-  for(std::size_t i = 0; i < order.size(); ++i)
-    order[i] = i;
-  CGAL::hilbert_sort(order.begin(), order.end(),
-                     CGAL::Spatial_sort_traits_adapter_3<GR::Work_kernel, decltype(CGAL::make_property_map(unit_points))>(
-                       CGAL::make_property_map(unit_points)));
   GR::Work_mesh work;
+  work.reserve(static_cast<typename GR::Work_mesh::size_type>(num_vertices(tmesh)),
+               static_cast<typename GR::Work_mesh::size_type>(num_edges(tmesh)),
+               static_cast<typename GR::Work_mesh::size_type>(num_faces(tmesh)));
   const auto vertex_index = CGAL::get_initialized_vertex_index_map(tmesh, np);
   std::vector<GR::Work_mesh::Vertex_index> work_vertex(input_vertices.size());
   auto to_work = [&](vertex_descriptor v) { return work_vertex[get(vertex_index, v)]; };
   std::vector<char> constrained_vertex;
-  for(std::size_t i : order)
   {
-    work_vertex[get(vertex_index, input_vertices[i])] = work.add_vertex(unit_points[i]);
-    constrained_vertex.push_back(get(vcm, input_vertices[i]) ? 1 : 0);
+    std::vector<GR::Work_kernel::Point_3> unit_points;
+    unit_points.reserve(input_points.size());
+    for(const GR::Vector_3d& q : input_points)
+    {
+      const GR::Vector_3d p = normalization.to_unit(q);
+      unit_points.emplace_back(p.x(), p.y(), p.z());
+    }
+    std::vector<std::size_t> order(input_vertices.size());
+    for(std::size_t i = 0; i < order.size(); ++i)
+      order[i] = i;
+    CGAL::hilbert_sort(order.begin(), order.end(),
+                       CGAL::Spatial_sort_traits_adapter_3<GR::Work_kernel, decltype(CGAL::make_property_map(unit_points))>(
+                         CGAL::make_property_map(unit_points)));
+    constrained_vertex.reserve(order.size());
+    for(std::size_t i : order)
+    {
+      work_vertex[get(vertex_index, input_vertices[i])] = work.add_vertex(unit_points[i]);
+      constrained_vertex.push_back(get(vcm, input_vertices[i]) ? 1 : 0);
+    }
   }
-  std::vector<std::pair<std::size_t, std::array<GR::Work_mesh::Vertex_index, 3> > > input_faces;
-  for(auto f : faces(tmesh))
   {
-    const auto h = halfedge(f, tmesh);
-    const std::array<GR::Work_mesh::Vertex_index, 3> t{
-      {to_work(source(h, tmesh)), to_work(target(h, tmesh)), to_work(target(next(h, tmesh), tmesh))}};
-    input_faces.emplace_back(std::size_t((std::min)({t[0], t[1], t[2]})), t);
+    std::vector<std::pair<std::size_t, std::array<GR::Work_mesh::Vertex_index, 3> > > input_faces;
+    input_faces.reserve(num_faces(tmesh));
+    for(auto f : faces(tmesh))
+    {
+      const auto h = halfedge(f, tmesh);
+      const std::array<GR::Work_mesh::Vertex_index, 3> t{
+        {to_work(source(h, tmesh)), to_work(target(h, tmesh)), to_work(target(next(h, tmesh), tmesh))}};
+      input_faces.emplace_back(std::size_t((std::min)({t[0], t[1], t[2]})), t);
+    }
+    std::stable_sort(input_faces.begin(), input_faces.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for(const auto& f : input_faces)
+      work.add_face(f.second[0], f.second[1], f.second[2]);
   }
-  std::stable_sort(input_faces.begin(), input_faces.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
-  for(const auto& f : input_faces)
-    work.add_face(f.second[0], f.second[1], f.second[2]);
-  input_faces = decltype(input_faces)();
 
   // Features: sharp edges of the input, border edges, user-constrained edges.
   std::vector<char> feature_edge = GR::detect_sharp_edges(work, sharp_bounds.first, sharp_bounds.second);

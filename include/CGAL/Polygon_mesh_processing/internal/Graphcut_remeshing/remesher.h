@@ -200,37 +200,42 @@ public:
     ++m_round;
 
     // Candidates, each vertex on its own with its own random numbers.
+    // The candidates, by vertex until the moving vertices are known, then by variable.
     const std::size_t n = m_mesh.num_vertices();
     std::vector<char> proposed(n, 0);
-    std::vector<Vector_3d> proposal(n);
-    std::vector<Location> proposal_location(n);
-    std::vector<Face> proposal_face(n); // a free vertex's candidate lies on this reference triangle
-    std::vector<double> proposal_data(n, 0);
+    std::vector<Vector_3d> candidate(n);
+    std::vector<Location> candidate_location(n);
+    std::vector<Face> candidate_face(n); // a free vertex's candidate lies on this reference triangle
+    std::vector<double> proposal_data(n, 0); // by vertex
     m_proposal_face_term.resize(m_mesh.num_halfedges());
     for_each_vertex([&](Vertex v) {
       const std::size_t i = std::size_t(v);
       CGAL::Random rng(item_seed(m_options.random_seed, m_round, i));
-      proposed[i] = propose(v, temperature, greedy, rng, proposal[i], proposal_location[i], proposal_face[i],
+      proposed[i] = propose(v, temperature, greedy, rng, candidate[i], candidate_location[i], candidate_face[i],
                             m_proposal_face_term);
       if(proposed[i])
-        proposal_data[i] = data_energy(v, proposal[i], proposal_face[i]);
+        proposal_data[i] = data_energy(v, candidate[i], candidate_face[i]);
     });
+    // The vertices with a candidate are the cut's variables, in the order of the vertices: their
+    // candidates move down in place.
     std::vector<std::size_t> variable(n, Binary_graph_cut::none);
     std::vector<Vertex> moving;
-    std::vector<Vector_3d> candidate;
-    std::vector<Location> candidate_location;
-    std::vector<Face> candidate_face;
     std::vector<double> candidate_data;
     for(Vertex v : m_mesh.vertices())
       if(proposed[std::size_t(v)])
       {
-        variable[std::size_t(v)] = moving.size();
+        const std::size_t i = std::size_t(v), k = moving.size();
+        variable[i] = k;
         moving.push_back(v);
-        candidate.push_back(proposal[std::size_t(v)]);
-        candidate_location.push_back(proposal_location[std::size_t(v)]);
-        candidate_face.push_back(proposal_face[std::size_t(v)]);
-        candidate_data.push_back(proposal_data[std::size_t(v)]);
+        candidate[k] = candidate[i];
+        candidate_location[k] = candidate_location[i];
+        candidate_face[k] = candidate_face[i];
+        candidate_data.push_back(proposal_data[i]);
       }
+    proposed = std::vector<char>();
+    candidate.resize(moving.size());
+    candidate_location.resize(moving.size());
+    candidate_face.resize(moving.size());
     if(moving.empty())
       return 0;
 
