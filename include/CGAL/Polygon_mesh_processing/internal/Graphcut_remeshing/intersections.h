@@ -229,26 +229,28 @@ private:
     // corner of the intersection is the largest of the low corners: in a cell both boxes meet, it
     // lies in that cell when on each axis one of the two boxes starts in it. Entries of another
     // cell of the same bucket can only give a pair found elsewhere too. The entries of a bucket
-    // come by their low-cell axes: only the groups whose axes cover all three are paired. Each
-    // entry is read with a copy of its box, so that a bucket is one sweep of memory.
-    std::vector<Small_box> listed_box(m_entries.size());
-    for_each_index(m_entries.size(), [&](std::size_t i) { listed_box[i] = m_face_box[std::size_t(m_entries[i].face())]; });
+    // come by their low-cell axes: only the groups whose axes cover all three are paired. The
+    // boxes of a bucket's entries are copied out first, so that its pairs read one small array.
     collect_by_blocks(m_buckets, m_candidates, [&](std::size_t k, std::vector<Face_pair>& found) {
+      const std::size_t first = m_start[k], size = m_start[k + 1] - first;
+      boost::container::small_vector<Small_box, 32> listed_box(size);
+      for(std::size_t i = 0; i < size; ++i)
+        listed_box[i] = m_face_box[std::size_t(m_entries[first + i].face())];
       std::array<std::size_t, 9> group; // the entries of low-cell axes m: [group[m], group[m + 1])
-      for(std::size_t m = 0, i = m_start[k]; m < 8; ++m)
+      for(std::size_t m = 0, i = 0; m < 8; ++m)
       {
         group[m] = i;
-        while(i < m_start[k + 1] && m_entries[i].low() == m)
+        while(i < size && m_entries[first + i].low() == m)
           ++i;
       }
-      group[8] = m_start[k + 1];
+      group[8] = size;
       for(int ga = 0; ga < 8; ++ga)
         for(int gb = ga; gb < 8; ++gb)
           if((ga | gb) == 7)
             for(std::size_t i = group[ga]; i < group[ga + 1]; ++i)
               for(std::size_t j = (ga == gb ? i + 1 : group[gb]); j < group[gb + 1]; ++j)
               {
-                const Face fi = m_entries[i].face(), fj = m_entries[j].face();
+                const Face fi = m_entries[first + i].face(), fj = m_entries[first + j].face();
                 if(fi != fj && overlap(listed_box[i], listed_box[j]) && !share_vertex(fi, fj))
                   found.push_back(fi < fj ? Face_pair(fi, fj) : Face_pair(fj, fi));
               }
