@@ -89,7 +89,16 @@ public:
   }
 
   // Number of terms that were representable (submodular) under the chosen mappings, after `solve`.
-  std::size_t number_of_representable_terms() const { return m_representable; }
+  std::size_t number_of_representable_terms() const
+  {
+    std::size_t representable_terms = 0;
+    if(m_mapping.size() != m_unary.size())
+      return 0; // not solved yet
+    for(const Term& t : m_terms)
+      if(representable(t, m_mapping))
+        ++representable_terms;
+    return representable_terms;
+  }
 
   // Minimises the energy, starting from the all-zero labelling, and returns the labels.
   std::vector<char> solve()
@@ -166,6 +175,9 @@ private:
     }
     m_mapping.assign(n, -1);
     std::vector<char> visited(m_terms.size(), 0);
+    // A variable's terms are all queued the first time one of them is dequeued: later visits of
+    // the variable would find nothing new.
+    std::vector<char> expanded(n, 0);
     // Each term enters the queue once: a flat array read from its front.
     std::vector<Index> queue;
     queue.reserve(m_terms.size());
@@ -180,22 +192,21 @@ private:
         const Index ti = queue[front];
         map_term(ti);
         for(Index v : m_terms[ti].variables)
-          if(v != no_index)
+          if(v != no_index && !expanded[v])
+          {
+            expanded[v] = 1;
             for(std::size_t a = first_term[v]; a < first_term[v + 1]; ++a)
               if(!visited[adjacent_terms[a]])
               {
                 visited[adjacent_terms[a]] = 1;
                 queue.push_back(adjacent_terms[a]);
               }
+          }
       }
     }
     for(std::size_t i = 0; i < n; ++i)
       if(m_mapping[i] < 0)
         m_mapping[i] = 0;
-    m_representable = 0;
-    for(const Term& t : m_terms)
-      if(representable(t, m_mapping))
-        ++m_representable;
   }
 
   void map_term(std::size_t ti)
@@ -454,7 +465,6 @@ private:
   std::vector<double> m_unary;
   std::vector<Term> m_terms;
   std::vector<signed char> m_mapping;
-  std::size_t m_representable = 0;
 };
 
 } // namespace Graphcut_remeshing
