@@ -34,12 +34,8 @@ using Work = GR::Work_mesh;
 
 namespace {
 
-Work to_work(const Mesh& m)
-{
-  Work w;
-  CGAL::copy_face_graph(m, w);
-  return w;
-}
+// The sharp-edge hysteresis bounds of eq. (8) these tests use (the library's defaults).
+const double theta_false = 20, theta_true = 35;
 
 // Random flips that keep the triangles sound, to make the valences irregular.
 void scramble(Work& m, const std::vector<char>& feature, unsigned seed, std::size_t flips)
@@ -70,9 +66,9 @@ class Pass_setup
 {
 public:
   explicit Pass_setup(const Work& m, double length_factor = 1.0, bool sharp_features = true)
-    : mesh(m), reference_mesh(m), reference(reference_mesh),
+    : mesh(m), reference_mesh(m), reference(reference_mesh, theta_false),
       reference_feature_edge(features_of(m, sharp_features)),
-      reference_kind(GR::classify_vertices(m, reference_feature_edge, std::vector<char>(m.num_vertices(), 0))),
+      reference_kind(GR::classify_vertices(m, reference_feature_edge, std::vector<char>(m.num_vertices(), 0), theta_true)),
       polylines(reference_mesh, reference_feature_edge, reference_kind)
   {
     state.feature_edge = reference_feature_edge;
@@ -271,10 +267,10 @@ struct Named_mesh
 std::vector<Named_mesh> scrambled_meshes()
 {
   std::vector<Named_mesh> meshes;
-  meshes.push_back({"noisy sphere", to_work(noisy_sphere(3, 0.02, 0.0, 11))});
-  meshes.push_back({"torus", to_work(make_torus(36, 14, 1.0, 0.35))});
-  meshes.push_back({"jittered box", to_work(jittered_box(1, 2, 0.5, 6, 12))});
-  meshes.push_back({"flat grid", to_work(make_grid(14, 12, [](std::size_t i, std::size_t j) {
+  meshes.push_back({"noisy sphere", to_work_mesh(noisy_sphere(3, 0.02, 0.0, 11))});
+  meshes.push_back({"torus", to_work_mesh(make_torus(36, 14, 1.0, 0.35))});
+  meshes.push_back({"jittered box", to_work_mesh(jittered_box(1, 2, 0.5, 6, 12))});
+  meshes.push_back({"flat grid", to_work_mesh(make_grid(14, 12, [](std::size_t i, std::size_t j) {
                       return Point(double(i) + 0.3 * std::sin(3.0 * double(j)), double(j) + 0.2 * std::cos(2.0 * double(i)), 0);
                     }))});
   unsigned seed = 1;
@@ -379,7 +375,7 @@ TEST(Connectivity_pass, CollapsesStayAwayFromFeaturesAndCurvedParts)
 {
   // The box: its faces are flat, its edges sharp; scrambled, so that collapses can make the
   // valences more regular. Every edge is short for a target twice the mean.
-  Work box = to_work(jittered_box(1, 1, 1, 8, 3));
+  Work box = to_work_mesh(jittered_box(1, 1, 1, 8, 3));
   scramble(box, GR::detect_sharp_edges(box, 20, 35), 4, box.number_of_edges());
   Pass_setup s(box, 2.0);
   // The vertices of the sharp edges and the degrees they had.
@@ -407,7 +403,7 @@ TEST(Connectivity_pass, CollapsesStayAwayFromFeaturesAndCurvedParts)
   }
 
   // A sphere is curved everywhere: no dihedral angle below 10 degrees at this resolution.
-  Pass_setup sphere(to_work(make_sphere(2)), 2.0);
+  Pass_setup sphere(to_work_mesh(make_sphere(2)), 2.0);
   EXPECT_EQ(sphere.optimizer().collapse_edges(), 0u);
 }
 
@@ -435,7 +431,7 @@ Work fan_disc(std::size_t n, double scale, double unevenness = 0)
     triangles.push_back({{inner(k), outer(k), inner(k + 1)}});
     triangles.push_back({{inner(k + 1), outer(k), outer(k + 1)}});
   }
-  return to_work(mesh_from_soup(points, triangles));
+  return to_work_mesh(mesh_from_soup(points, triangles));
 }
 
 TEST(Connectivity_pass, VertexSplitLowersTheValenceDeviation)
@@ -515,7 +511,7 @@ TEST(Connectivity_pass, LongEdgesBetweenObtuseTrianglesAreSplit)
       triangles.push_back({{b(k), b(k + 1), k + 1}});
     }
   }
-  Pass_setup s(to_work(mesh_from_soup(points, triangles)));
+  Pass_setup s(to_work_mesh(mesh_from_soup(points, triangles)));
   s.sizing.mean_length = 1.0;
   auto mean_quality = [&s] {
     double q = 0;
@@ -551,7 +547,7 @@ TEST(Guarantees, AFoldOffTheSharpEdgesIsABrokenGuarantee)
 {
   for(double push : {1.5, 2.5})
   {
-    const Work flat = to_work(make_equilateral_patch(9, 1.0));
+    const Work flat = to_work_mesh(make_equilateral_patch(9, 1.0));
     Work m = flat;
     const Work::Vertex_index v(40), w(41);
     const GR::Vector_3d p = GR::to_vector(m.point(v)) + push * (GR::to_vector(m.point(w)) - GR::to_vector(m.point(v)));
@@ -574,7 +570,7 @@ TEST(Connectivity_pass, RelaxationImprovesWithoutFolding)
 {
   for(double push : {0.3, 0.45, 0.49})
   {
-    Work m = to_work(make_equilateral_patch(9, 1.0));
+    Work m = to_work_mesh(make_equilateral_patch(9, 1.0));
     // Push an interior vertex towards a neighbour.
     const Work::Vertex_index v(40), w(41);
     const GR::Vector_3d p = GR::to_vector(m.point(v)) + 2 * push * (GR::to_vector(m.point(w)) - GR::to_vector(m.point(v)));
@@ -598,11 +594,11 @@ TEST(Connectivity_pass, LongSharpEdgesAreSplitOnTheirPolyline)
   {
     const std::string name = "box at scale " + std::to_string(scale);
     Mesh box = jittered_box(4 * scale, scale, scale, 3, 41, true);
-    Pass_setup s(to_work(box));
+    Pass_setup s(to_work_mesh(box));
     const std::size_t sharp_before = s.feature_edges().size();
     {
       // Without the polylines, sharp edges are left whole.
-      Pass_setup plain(to_work(box));
+      Pass_setup plain(to_work_mesh(box));
       plain.optimizer().split_edges();
       EXPECT_EQ(plain.feature_edges().size(), sharp_before) << name;
     }
@@ -638,7 +634,7 @@ TEST(Connectivity_pass, LongSharpEdgesAreSplitOnTheirPolyline)
 // Beyond the paper, the relaxation keeps only the moves that do not raise the local energy.
 TEST(Connectivity_pass, RelaxationKeepsOnlyMovesThatDoNotRaiseTheLocalEnergy)
 {
-  Work m = to_work(make_equilateral_patch(9, 1.0));
+  Work m = to_work_mesh(make_equilateral_patch(9, 1.0));
   const Work::Vertex_index v(40), w(41);
   const GR::Vector_3d p = GR::to_vector(m.point(v)) + 0.8 * (GR::to_vector(m.point(w)) - GR::to_vector(m.point(v)));
   m.point(v) = GR::Work_kernel::Point_3(p.x(), p.y(), p.z());
@@ -656,7 +652,7 @@ TEST(Connectivity_pass, RelaxationKeepsOnlyMovesThatDoNotRaiseTheLocalEnergy)
   {
     // An energy that only the pushed vertex's way back lowers: only it moves.
     Pass_setup s(m);
-    const GR::Vector_3d home = GR::to_vector(to_work(make_equilateral_patch(9, 1.0)).point(v));
+    const GR::Vector_3d home = GR::to_vector(to_work_mesh(make_equilateral_patch(9, 1.0)).point(v));
     const std::size_t moved = s.optimizer_with_features([&](Work::Vertex_index u, const GR::Vector_3d& x, double) {
       return u == v ? (x - home).squaredNorm() : (x - s.point(u)).squaredNorm();
     }).relax();
@@ -683,10 +679,10 @@ TEST(GraphcutRemeshing, ConnectivityKeepsTheGuarantees)
   for(Case& c : cases)
   {
     const Mesh input = c.mesh;
-    const Work w = to_work(input);
+    const Work w = to_work_mesh(input);
     const auto stats = PMP::graphcut_isotropic_remeshing(
       c.mesh, GP::combine(CGAL::parameters::number_of_iterations(20), GP::number_of_greedy_iterations(3)));
-    const Work out = to_work(c.mesh);
+    const Work out = to_work_mesh(c.mesh);
     EXPECT_TRUE(CGAL::is_valid_polygon_mesh(c.mesh)) << c.name;
     EXPECT_EQ(euler_characteristic(out), euler_characteristic(w)) << c.name;
     EXPECT_EQ(components(out), components(w)) << c.name;
@@ -708,7 +704,7 @@ TEST(GraphcutRemeshing, ConnectivityKeepsTheGuarantees)
       << c.name;
     // Corners (three or more sharp edges) stay where they were, as vertices of the output.
     const std::vector<char> sharp = GR::detect_sharp_edges(w, 20, 35);
-    const std::vector<GR::Vertex_kind> kind = GR::classify_vertices(w, sharp, std::vector<char>(w.num_vertices(), 0));
+    const std::vector<GR::Vertex_kind> kind = GR::classify_vertices(w, sharp, std::vector<char>(w.num_vertices(), 0), theta_true);
     std::set<std::array<double, 3> > output_points;
     for(auto v : vertices(c.mesh))
       output_points.insert({{c.mesh.point(v).x(), c.mesh.point(v).y(), c.mesh.point(v).z()}});
@@ -727,7 +723,7 @@ TEST(GraphcutRemeshing, ConnectivityKeepsTheGuarantees)
 TEST(GraphcutRemeshing, ConstrainedMapsAreUpdatedWhenTheConnectivityChanges)
 {
   // A sphere whose valences were scrambled, so that the passes flip edges.
-  Work scrambled = to_work(noisy_sphere(3, 0.03, 0.0, 31));
+  Work scrambled = to_work_mesh(noisy_sphere(3, 0.03, 0.0, 31));
   scramble(scrambled, std::vector<char>(scrambled.num_edges(), 0), 33, scrambled.number_of_edges());
   Mesh m;
   CGAL::copy_face_graph(scrambled, m);
@@ -735,19 +731,7 @@ TEST(GraphcutRemeshing, ConstrainedMapsAreUpdatedWhenTheConnectivityChanges)
   auto vcm = m.add_property_map<Mesh::Vertex_index, bool>("v:constrained", false).first;
   std::set<std::pair<std::array<double, 3>, std::array<double, 3> > > constrained;
   auto key = [&m](Mesh::Vertex_index v) { return std::array<double, 3>{{m.point(v).x(), m.point(v).y(), m.point(v).z()}}; };
-  // The equator-crossing loop of edges, as in test_remeshing.
-  for(auto e : edges(m))
-  {
-    const auto h = halfedge(e, m);
-    auto below = [&](Mesh::Face_index f) {
-      for(auto u : vertices_around_face(halfedge(f, m), m))
-        if(m.point(u).z() < 0)
-          return true;
-      return false;
-    };
-    if(below(face(h, m)) != below(face(opposite(h, m), m)))
-      ecm[e] = true;
-  }
+  constrain_equator(m, ecm);
   std::set<std::array<double, 3> > pinned;
   CGAL::Random rng(32);
   for(auto v : vertices(m))
@@ -884,7 +868,7 @@ TEST(Triangle_intersections, AllPairsAsCgalFindsThem)
   for(const auto& named : meshes)
   {
     SCOPED_TRACE(named.first);
-    Work w = to_work(named.second);
+    Work w = to_work_mesh(named.second);
     const std::vector<Face_pair> expected = cgal_self_intersections(w);
     EXPECT_EQ(GR::Triangle_intersections(w).all_pairs(), expected);
     intersecting_meshes += expected.empty() ? 0 : 1;
@@ -904,7 +888,7 @@ TEST(Triangle_intersections, AfterMovesOfAFewVerticesAsCgalFindsThem)
   for(const auto& named : meshes)
   {
     SCOPED_TRACE(named.first);
-    Work w = to_work(named.second);
+    Work w = to_work_mesh(named.second);
     const bool planar = named.first == "flat grid";
     const double h = mean_edge_length(w);
     GR::Triangle_intersections intersections(w);
@@ -948,7 +932,7 @@ TEST(Triangle_intersections, AfterConnectivityChangesAsCgalFindsThem)
   for(const auto& named : meshes)
   {
     SCOPED_TRACE(named.first);
-    Work w = to_work(named.second);
+    Work w = to_work_mesh(named.second);
     const double h = mean_edge_length(w);
     GR::Triangle_intersections intersections(w);
     intersections.all_pairs();

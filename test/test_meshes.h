@@ -9,8 +9,23 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Random.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/version.h>
+
+// CGAL 6.0 renamed AABB_traits (deprecated) to AABB_traits_3; CGAL 6.2 moved
+// extract_boundary_cycles out of Polygon_mesh_processing.
+#if CGAL_VERSION_NR >= 1060000000
+#include <CGAL/AABB_traits_3.h>
+#else
+#include <CGAL/AABB_traits.h>
+#endif
+#if CGAL_VERSION_NR >= 1060200000
+#include <CGAL/boost/graph/border.h>
+#else
+#include <CGAL/Polygon_mesh_processing/border.h>
+#endif
 
 #include <gtest/gtest.h>
 
@@ -27,8 +42,70 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Vector = Kernel::Vector_3;
 using Mesh = CGAL::Surface_mesh<Point>;
+#if CGAL_VERSION_NR >= 1060000000
+template <typename GeomTraits, typename Primitive>
+using Tree_traits = CGAL::AABB_traits_3<GeomTraits, Primitive>;
+#else
+template <typename GeomTraits, typename Primitive>
+using Tree_traits = CGAL::AABB_traits<GeomTraits, Primitive>;
+#endif
+
+// One halfedge of each border cycle of m.
+template <typename PolygonMesh, typename OutputIterator>
+OutputIterator boundary_cycles(const PolygonMesh& m, OutputIterator out)
+{
+#if CGAL_VERSION_NR >= 1060200000
+  return CGAL::extract_boundary_cycles(m, out);
+#else
+  return CGAL::Polygon_mesh_processing::extract_boundary_cycles(m, out);
+#endif
+}
+
+// The type of the remesher's working mesh (GR::Work_mesh), for tests of its parts.
+using Work_point = CGAL::Simple_cartesian<double>::Point_3;
+using Work_mesh = CGAL::Surface_mesh<Work_point>;
+using Work_vertex = Work_mesh::Vertex_index;
 
 inline const double pi = std::acos(-1.0);
+
+// Constrains, with ecm[e] = true, the edges between the faces of m with a vertex below the plane
+// z = 0 and the others: a closed loop of edges round a closed surface. Returns their number.
+template <typename EdgeConstrainedMap>
+std::size_t constrain_equator(const Mesh& m, EdgeConstrainedMap& ecm)
+{
+  auto below = [&](Mesh::Face_index f) {
+    for(auto u : vertices_around_face(halfedge(f, m), m))
+      if(m.point(u).z() < 0)
+        return true;
+    return false;
+  };
+  std::size_t count = 0;
+  for(auto e : edges(m))
+  {
+    const auto h = halfedge(e, m);
+    if(below(face(h, m)) != below(face(opposite(h, m), m)))
+    {
+      ecm[e] = true;
+      ++count;
+    }
+  }
+  return count;
+}
+
+// `input` as a working mesh, index for index.
+inline Work_mesh to_work_mesh(const Mesh& input)
+{
+  Work_mesh w;
+  for(auto v : vertices(input))
+    w.add_vertex(Work_point(input.point(v).x(), input.point(v).y(), input.point(v).z()));
+  for(auto f : faces(input))
+  {
+    const auto h = halfedge(f, input);
+    w.add_face(Work_vertex(std::size_t(source(h, input))), Work_vertex(std::size_t(target(h, input))),
+               Work_vertex(std::size_t(target(next(h, input), input))));
+  }
+  return w;
+}
 
 inline Mesh mesh_from_soup(const std::vector<Point>& points,
                            const std::vector<std::array<std::size_t, 3> >& triangles)

@@ -9,7 +9,6 @@
 #include <CGAL/Polygon_mesh_processing/mesh_quality_report.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
@@ -225,7 +224,7 @@ TEST(SurfaceDistance, FandiskAgreesWithMetroStyleReference)
                               CGAL::parameters::number_of_points_on_faces(n).random_seed(42)
                                 .do_sample_vertices(false).do_sample_edges(false));
     using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > tree(faces(to).first, faces(to).second, to);
+    CGAL::AABB_tree<Tree_traits<Kernel, Primitive> > tree(faces(to).first, faces(to).second, to);
     double sum = 0;
     for(const Point& p : samples)
       sum += tree.squared_distance(p);

@@ -39,27 +39,9 @@ using GR::Vector_3d;
 
 namespace {
 
-// The same type as GR::Work_mesh; remesher.h (which pulls in the self-intersection machinery) is
-// not needed by these tests.
-using Work_point = CGAL::Simple_cartesian<double>::Point_3;
-using Work_mesh = CGAL::Surface_mesh<Work_point>;
-using Work_vertex = Work_mesh::Vertex_index;
-
 const double eps = std::numeric_limits<double>::epsilon();
-
-Work_mesh to_work_mesh(const Mesh& input)
-{
-  Work_mesh w;
-  for(auto v : vertices(input))
-    w.add_vertex(Work_point(input.point(v).x(), input.point(v).y(), input.point(v).z()));
-  for(auto f : faces(input))
-  {
-    const auto h = halfedge(f, input);
-    w.add_face(Work_vertex(std::size_t(source(h, input))), Work_vertex(std::size_t(target(h, input))),
-               Work_vertex(std::size_t(target(next(h, input), input))));
-  }
-  return w;
-}
+// The sharp-edge hysteresis bounds of eq. (8) these tests use (the library's defaults).
+const double theta_false = 20, theta_true = 35;
 
 Vector_3d vec(const Work_point& p) { return Vector_3d(p.x(), p.y(), p.z()); }
 
@@ -478,7 +460,7 @@ TEST(Reference_surface, JetFramesOnAnIcosphere)
   {
     const Vector_3d centre(0.1, -0.2, 0.3);
     const Work_mesh m = to_work_mesh(make_sphere(4, R, Point(centre.x(), centre.y(), centre.z())));
-    const GR::Reference_surface<Work_mesh> reference(m);
+    const GR::Reference_surface<Work_mesh> reference(m, theta_false);
     double worst = 0;
     for(Work_vertex v : m.vertices())
     {
@@ -510,7 +492,7 @@ struct Sphere_fixture
 
   explicit Sphere_fixture(double radius)
     : centre(0.1, -0.2, 0.3), R(radius),
-      m(to_work_mesh(make_sphere(4, radius, Point(centre.x(), centre.y(), centre.z())))), reference(m)
+      m(to_work_mesh(make_sphere(4, radius, Point(centre.x(), centre.y(), centre.z())))), reference(m, theta_false)
   {}
 
   Vector_3d point(Work_vertex v) const { return vec(m.point(v)); }
@@ -935,7 +917,7 @@ TEST(Features, VertexKindsOnACube)
       EXPECT_EQ(int(kind[std::size_t(v)]), int(expected)) << "vertex " << m.point(v);
     }
   };
-  const std::vector<GR::Vertex_kind> kind = GR::classify_vertices(m, sharp, constrained);
+  const std::vector<GR::Vertex_kind> kind = GR::classify_vertices(m, sharp, constrained, theta_true);
   check(kind);
   EXPECT_EQ(std::count(kind.begin(), kind.end(), GR::Vertex_kind::fixed_vertex), 8);
   EXPECT_EQ(std::count(kind.begin(), kind.end(), GR::Vertex_kind::feature_vertex), 12 * (n - 1));
@@ -947,7 +929,7 @@ TEST(Features, VertexKindsOnACube)
        (extreme_coordinates(m.point(v)) == 2 && std::count(constrained.begin(), constrained.end(), 1) == 1))
       constrained[std::size_t(v)] = 1;
   ASSERT_EQ(std::count(constrained.begin(), constrained.end(), 1), 2);
-  const std::vector<GR::Vertex_kind> constrained_kind = GR::classify_vertices(m, sharp, constrained);
+  const std::vector<GR::Vertex_kind> constrained_kind = GR::classify_vertices(m, sharp, constrained, theta_true);
   check(constrained_kind);
   EXPECT_EQ(std::count(constrained_kind.begin(), constrained_kind.end(), GR::Vertex_kind::fixed_vertex), 10);
 }
@@ -957,7 +939,7 @@ TEST(Features, SlidingAlongACubeEdge)
   const int n = 4; // the edge from (0,0,0) to (1,0,0) has four segments of length 0.25
   const Work_mesh m = make_lattice_cube(n);
   const std::vector<char> sharp = GR::detect_sharp_edges(m, 20, 35);
-  const std::vector<GR::Vertex_kind> kind = GR::classify_vertices(m, sharp, std::vector<char>(m.number_of_vertices(), 0));
+  const std::vector<GR::Vertex_kind> kind = GR::classify_vertices(m, sharp, std::vector<char>(m.number_of_vertices(), 0), theta_true);
   const GR::Feature_polylines<Work_mesh> polylines(m, sharp, kind);
   Work_vertex start;
   for(Work_vertex v : m.vertices())

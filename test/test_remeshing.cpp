@@ -145,18 +145,9 @@ TEST(GraphcutRemeshing, FandiskFeaturesStayWhereTheyWere)
                                                    GP::number_of_greedy_iterations(10),
                                                    GP::do_connectivity_optimization(false)));
   // The input's sharp edges by the same hysteresis as the remesher.
-  GR::Work_mesh w;
-  for(auto v : vertices(input))
-    w.add_vertex(GR::Work_kernel::Point_3(input.point(v).x(), input.point(v).y(), input.point(v).z()));
-  for(auto f : faces(input))
-  {
-    const auto h = halfedge(f, input);
-    w.add_face(GR::Work_mesh::Vertex_index(std::size_t(source(h, input))),
-               GR::Work_mesh::Vertex_index(std::size_t(target(h, input))),
-               GR::Work_mesh::Vertex_index(std::size_t(target(next(h, input), input))));
-  }
+  const GR::Work_mesh w = to_work_mesh(input);
   const std::vector<char> sharp = GR::detect_sharp_edges(w, 20, 35);
-  const std::vector<GR::Vertex_kind> kind = GR::classify_vertices(w, sharp, std::vector<char>(num_vertices(w), 0));
+  const std::vector<GR::Vertex_kind> kind = GR::classify_vertices(w, sharp, std::vector<char>(num_vertices(w), 0), 35);
   std::vector<std::pair<Point, Point> > segments;
   auto point = [&w](GR::Work_mesh::Vertex_index v) { return Point(w.point(v).x(), w.point(v).y(), w.point(v).z()); };
   for(auto e : w.edges())
@@ -201,24 +192,7 @@ TEST(GraphcutRemeshing, UserConstraintsAreHonoured)
   CGAL::Random rng(5);
   for(auto v : vertices(m))
     vcm[v] = rng.get_int(0, 10) == 0;
-  // A closed loop of edges: the faces' edges crossing the plane z = 0 side are constrained
-  // (the border between the faces with a vertex below and the others).
-  std::size_t constrained_edges = 0;
-  for(auto e : edges(m))
-  {
-    const auto h = halfedge(e, m);
-    auto below = [&](Mesh::Face_index f) {
-      for(auto u : vertices_around_face(halfedge(f, m), m))
-        if(m.point(u).z() < 0)
-          return true;
-      return false;
-    };
-    if(below(face(h, m)) != below(face(opposite(h, m), m)))
-    {
-      ecm[e] = true;
-      ++constrained_edges;
-    }
-  }
+  const std::size_t constrained_edges = constrain_equator(m, ecm);
   ASSERT_GT(constrained_edges, 10u);
   PMP::graphcut_isotropic_remeshing(m, GP::combine(CGAL::parameters::number_of_iterations(30)
                                                      .vertex_is_constrained_map(vcm)

@@ -12,9 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/mesh_quality_report.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -93,7 +91,7 @@ Topology topology(const Mesh& m)
   std::vector<std::size_t> ids(num_faces(m));
   t.components = PMP::connected_components(m, CGAL::make_property_map(ids));
   std::vector<Mesh::Halfedge_index> cycles;
-  PMP::extract_boundary_cycles(m, std::back_inserter(cycles));
+  boundary_cycles(m, std::back_inserter(cycles));
   t.border_cycles = cycles.size();
   return t;
 }
@@ -161,7 +159,7 @@ void expect_guarantees(const Mesh& input, const Mesh& output, const std::string&
   EXPECT_EQ(b.border_cycles, a.border_cycles) << name;
 
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> >;
+  using Tree = CGAL::AABB_tree<Tree_traits<Kernel, Primitive> >;
   const Tree tree(faces(input).first, faces(input).second, input);
   std::size_t turned = 0;
   std::ostringstream first_turned;

@@ -16,7 +16,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
+#include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #ifdef _WIN32
@@ -31,26 +34,37 @@ namespace tools = graphcut_remeshing_tools;
 
 namespace {
 
-const char* const usage =
-  "usage: graphcut_remesh INPUT OUTPUT [options]\n"
-  "\n"
-  "Remeshes the triangle mesh INPUT into nearly equilateral triangles that stay close to the input\n"
-  "surface, writes OUTPUT and prints the quality before and after. Both files are OFF, OBJ, PLY or\n"
-  "STL, by their extension; PLY and STL are written in binary. On a terminal, a progress bar is\n"
-  "shown on stderr.\n"
-  "\n"
-  "  --iterations N          non-greedy relocation iterations (default 150)\n"
-  "  --greedy-iterations N   final greedy iterations (default 20)\n"
-  "  --lambda-data X         weight of the data term, unit-box scale (default 1e7)\n"
-  "  --face-data-weight X    weight of the data term at triangle centroids, relative to\n"
-  "                          lambda-data (default 0.05)\n"
-  "  --seed N                random seed; same input and seed, same output (default 0)\n"
-  "  --no-connectivity       relocate vertices only, never change the connectivity (default:\n"
-  "                          the connectivity is optimised)\n"
-  "  --quiet                 print nothing but errors, no progress bar (default: off)\n"
-  "  --json FILE             write the quality figures, distances, time and energies as JSON\n"
-  "                          (default: no JSON)\n"
-  "  --help                  print this help and exit (default: off)\n";
+namespace GR = PMP::internal::Graphcut_remeshing;
+
+// The help, with the library's defaults (the options not given are left to the library).
+std::string usage()
+{
+  const GR::Remeshing_options defaults;
+  std::ostringstream out;
+  out << "usage: graphcut_remesh INPUT OUTPUT [options]\n"
+         "\n"
+         "Remeshes the triangle mesh INPUT into nearly equilateral triangles that stay close to the input\n"
+         "surface, writes OUTPUT and prints the quality before and after. Both files are OFF, OBJ, PLY or\n"
+         "STL, by their extension; PLY and STL are written in binary. On a terminal, a progress bar is\n"
+         "shown on stderr.\n"
+         "\n"
+      << "  --iterations N          non-greedy relocation iterations (default " << defaults.number_of_iterations
+      << ")\n"
+      << "  --greedy-iterations N   final greedy iterations (default " << defaults.number_of_greedy_iterations << ")\n"
+      << "  --lambda-data X         weight of the data term, unit-box scale (default " << defaults.weights.lambda_data
+      << ")\n"
+      << "  --face-data-weight X    weight of the data term at triangle centroids, relative to\n"
+      << "                          lambda-data (default " << defaults.weights.face_data_weight << ")\n"
+      << "  --seed N                random seed; same input and seed, same output (default " << defaults.random_seed
+      << ")\n"
+         "  --no-connectivity       relocate vertices only, never change the connectivity (default:\n"
+         "                          the connectivity is optimised)\n"
+         "  --quiet                 print nothing but errors, no progress bar (default: off)\n"
+         "  --json FILE             write the quality figures, distances, time and energies as JSON\n"
+         "                          (default: no JSON)\n"
+         "  --help                  print this help and exit (default: off)\n";
+  return out.str();
+}
 
 // The formats write_polygon_mesh() writes, by extension (it also lowers the case).
 bool is_writable_mesh_file(const std::string& path)
@@ -158,9 +172,10 @@ bool parse_number(const std::string& text, T& value)
 
 int main(int argc, char** argv)
 {
-  std::size_t iterations = 150, greedy_iterations = 20;
-  double lambda_data = 1e7, face_data_weight = 0.05;
-  unsigned int seed = 0;
+  // What the user gives; the rest is left to the library's defaults.
+  std::optional<std::size_t> iterations, greedy_iterations;
+  std::optional<double> lambda_data, face_data_weight;
+  std::optional<unsigned int> seed;
   bool quiet = false, connectivity = true;
   std::string json_file;
   std::vector<std::string> files;
@@ -168,16 +183,18 @@ int main(int argc, char** argv)
   {
     const std::string arg = argv[i];
     auto value = [&](auto& target) {
-      if(i + 1 >= argc || !parse_number(argv[i + 1], target))
+      typename std::remove_reference_t<decltype(target)>::value_type number{};
+      if(i + 1 >= argc || !parse_number(argv[i + 1], number))
       {
         std::cerr << "graphcut_remesh: " << arg << " needs a non-negative number\n";
         std::exit(EXIT_FAILURE);
       }
+      target = number;
       ++i;
     };
     if(arg == "--help" || arg == "-h")
     {
-      std::cout << usage;
+      std::cout << usage();
       return EXIT_SUCCESS;
     }
     else if(arg == "--iterations") value(iterations);
@@ -206,7 +223,7 @@ int main(int argc, char** argv)
   }
   if(files.size() != 2)
   {
-    std::cerr << "graphcut_remesh: expected INPUT and OUTPUT (see --help)\n" << usage;
+    std::cerr << "graphcut_remesh: expected INPUT and OUTPUT (see --help)\n" << usage();
     return EXIT_FAILURE;
   }
   // Before the work, not after: a remeshing can take minutes.
@@ -226,14 +243,20 @@ int main(int argc, char** argv)
     tools::Mesh mesh = input;
 
     const auto start = std::chrono::steady_clock::now();
-    const auto parameters =
-      GP::combine(CGAL::parameters::number_of_iterations(iterations).random_seed(seed),
-                  GP::number_of_greedy_iterations(greedy_iterations), GP::lambda_data(lambda_data),
-                  GP::face_data_weight(face_data_weight), GP::do_connectivity_optimization(connectivity));
+    // The named parameters hold a value for every option: the user's, or the library's default.
+    const GR::Remeshing_options defaults;
+    const auto parameters = GP::combine(
+      CGAL::parameters::number_of_iterations(iterations.value_or(defaults.number_of_iterations))
+        .random_seed(seed.value_or(defaults.random_seed)),
+      GP::number_of_greedy_iterations(greedy_iterations.value_or(defaults.number_of_greedy_iterations)),
+      GP::lambda_data(lambda_data.value_or(defaults.weights.lambda_data)),
+      GP::face_data_weight(face_data_weight.value_or(defaults.weights.face_data_weight)),
+      GP::do_connectivity_optimization(connectivity));
     PMP::Graphcut_remeshing_statistics stats;
     if(!quiet && stderr_is_terminal())
     {
-      Progress_bar bar(iterations, greedy_iterations);
+      Progress_bar bar(iterations.value_or(defaults.number_of_iterations),
+                       greedy_iterations.value_or(defaults.number_of_greedy_iterations));
       // The visitor is copied: it refers to the bar, which clears its line when it goes.
       stats = PMP::graphcut_isotropic_remeshing(
         mesh, GP::combine(parameters, GP::visitor([&bar](const PMP::Graphcut_remeshing_progress& p) { return bar(p); })));

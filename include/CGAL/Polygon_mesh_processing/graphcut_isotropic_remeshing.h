@@ -6,27 +6,17 @@
 
 #include <CGAL/Polygon_mesh_processing/graphcut_remeshing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/graphcut_remeshing_validation.h>
-#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
-#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/normalization.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/remesher.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/working_copy.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/assertions.h>
-#include <CGAL/hilbert_sort.h>
-#include <CGAL/boost/graph/Euler_operations.h>
-#include <CGAL/boost/graph/copy_face_graph.h>
-#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/property_map.h>
 
-#include <algorithm>
-#include <array>
-#include <cstddef>
 #include <string>
 #include <utility>
-#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -88,9 +78,16 @@ struct Default_visitor
  *                    as key type and `%Point_3` as value type}
  *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tmesh)`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_index_map}
+ *     \cgalParamDescription{a property map associating to each vertex of `tmesh` a unique index between
+ *                           `0` and `num_vertices(tmesh) - 1`}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+ *                    as key type and `std::size_t` as value type}
+ *     \cgalParamDefault{an automatically indexed internal map}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{geom_traits}
- *     \cgalParamDescription{an instance of a geometric traits class; its points are built from
- *                           `double` coordinates}
+ *     \cgalParamDescription{an instance of a geometric traits class; its `Construct_point_3` makes
+ *                           the points written back into `tmesh` from `double` coordinates}
  *     \cgalParamType{a class model of `Kernel`}
  *     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
  *   \cgalParamNEnd
@@ -145,7 +142,10 @@ struct Default_visitor
  *   \cgalParamNEnd
  *   \cgalParamNBegin{graphcut_parameters::sharp_angle_bounds}
  *     \cgalParamDescription{the dihedral angles theta_false and theta_true (degrees) of the
- *                           sharp-edge hysteresis}
+ *                           sharp-edge hysteresis of eq. (8); the input's triangles within
+ *                           theta_false of each other also count as one smooth sheet when a
+ *                           vertex is tracked to its closest input point, and a border that
+ *                           turns by more than theta_true at a vertex makes it a corner}
  *     \cgalParamType{`std::pair<double, double>`}
  *     \cgalParamDefault{`(20, 35)`}
  *   \cgalParamNEnd
@@ -209,109 +209,46 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
   if(!validation.is_valid())
     throw Graphcut_remeshing_input_error(validation);
 
-  // Named parameters to plain values.
-  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                              get_property_map(CGAL::vertex_point, tmesh));
-  using GT = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
-  using Point = typename GT::Point_3;
+  // Named parameters to plain values; a parameter not given keeps the default of
+  // Remeshing_options, where the defaults are written.
+  const GR::Remeshing_options defaults;
+  GR::Remeshing_options options;
+  options.number_of_iterations =
+    choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults.number_of_iterations);
+  options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), defaults.random_seed);
+  options.weights.lambda_shape = choose_parameter(get_parameter(np, GNP::lambda_shape), defaults.weights.lambda_shape);
+  options.weights.lambda_data = choose_parameter(get_parameter(np, GNP::lambda_data), defaults.weights.lambda_data);
+  options.weights.face_data_weight =
+    choose_parameter(get_parameter(np, GNP::face_data_weight), defaults.weights.face_data_weight);
+  options.number_of_greedy_iterations =
+    choose_parameter(get_parameter(np, GNP::number_of_greedy_iterations), defaults.number_of_greedy_iterations);
+  options.initial_temperature =
+    choose_parameter(get_parameter(np, GNP::initial_temperature), defaults.initial_temperature);
+  options.cooling_factor = choose_parameter(get_parameter(np, GNP::cooling_factor), defaults.cooling_factor);
+  options.smoothing_step = choose_parameter(get_parameter(np, GNP::smoothing_step), defaults.smoothing_step);
+  options.do_connectivity_optimization =
+    choose_parameter(get_parameter(np, GNP::do_connectivity_optimization), defaults.do_connectivity_optimization);
+  options.connectivity_period =
+    choose_parameter(get_parameter(np, GNP::connectivity_period), defaults.connectivity_period);
+  options.sharp_angle_bounds =
+    choose_parameter(get_parameter(np, GNP::sharp_angle_bounds), defaults.sharp_angle_bounds);
+  auto visitor = choose_parameter(get_parameter(np, GNP::visitor), GR::Default_visitor());
+
+  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, tmesh));
   auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
                               Static_boolean_property_map<edge_descriptor, false>());
   auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                               Static_boolean_property_map<vertex_descriptor, false>());
-  GR::Remeshing_options options;
-  options.number_of_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), std::size_t(150));
-  options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
-  options.weights.lambda_shape = choose_parameter(get_parameter(np, GNP::lambda_shape), 1.0);
-  options.weights.lambda_data = choose_parameter(get_parameter(np, GNP::lambda_data), 1e7);
-  options.weights.face_data_weight = choose_parameter(get_parameter(np, GNP::face_data_weight), 0.05);
-  options.number_of_greedy_iterations =
-    choose_parameter(get_parameter(np, GNP::number_of_greedy_iterations), std::size_t(20));
-  options.initial_temperature = choose_parameter(get_parameter(np, GNP::initial_temperature), 10.0);
-  options.cooling_factor = choose_parameter(get_parameter(np, GNP::cooling_factor), 0.95);
-  options.smoothing_step = choose_parameter(get_parameter(np, GNP::smoothing_step), 0.06);
-  options.do_connectivity_optimization =
-    choose_parameter(get_parameter(np, GNP::do_connectivity_optimization), true);
-  options.connectivity_period =
-    choose_parameter(get_parameter(np, GNP::connectivity_period), std::size_t(5));
-  const std::pair<double, double> sharp_bounds =
-    choose_parameter(get_parameter(np, GNP::sharp_angle_bounds), std::make_pair(20.0, 35.0));
-  auto visitor = choose_parameter(get_parameter(np, GNP::visitor), GR::Default_visitor());
-
-  // The working copy, scaled into the unit box. Its vertices follow a Hilbert curve and its faces
-  // their first vertex: neighbours on the surface are then near in memory, which keeps the cost
-  // per vertex of an iteration flat on large meshes.
-  std::vector<vertex_descriptor> input_vertices;
-  std::vector<GR::Vector_3d> input_points;
-  input_vertices.reserve(num_vertices(tmesh));
-  input_points.reserve(num_vertices(tmesh));
-  for(vertex_descriptor v : vertices(tmesh))
-  {
-    input_vertices.push_back(v);
-    input_points.push_back(GR::to_vector(get(vpm, v)));
-  }
-  const GR::Unit_box_normalization normalization(input_points);
-  GR::Work_mesh work;
-  work.reserve(static_cast<typename GR::Work_mesh::size_type>(num_vertices(tmesh)),
-               static_cast<typename GR::Work_mesh::size_type>(num_edges(tmesh)),
-               static_cast<typename GR::Work_mesh::size_type>(num_faces(tmesh)));
+  using GT = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
+  const GT gt = choose_parameter<GT>(get_parameter(np, internal_np::geom_traits));
   const auto vertex_index = CGAL::get_initialized_vertex_index_map(tmesh, np);
-  std::vector<GR::Work_mesh::Vertex_index> work_vertex(input_vertices.size());
-  auto to_work = [&](vertex_descriptor v) { return work_vertex[get(vertex_index, v)]; };
-  std::vector<char> constrained_vertex;
-  {
-    std::vector<GR::Work_kernel::Point_3> unit_points;
-    unit_points.reserve(input_points.size());
-    for(const GR::Vector_3d& q : input_points)
-    {
-      const GR::Vector_3d p = normalization.to_unit(q);
-      unit_points.emplace_back(p.x(), p.y(), p.z());
-    }
-    std::vector<std::size_t> order(input_vertices.size());
-    for(std::size_t i = 0; i < order.size(); ++i)
-      order[i] = i;
-    CGAL::hilbert_sort(order.begin(), order.end(),
-                       CGAL::Spatial_sort_traits_adapter_3<GR::Work_kernel, decltype(CGAL::make_property_map(unit_points))>(
-                         CGAL::make_property_map(unit_points)));
-    constrained_vertex.reserve(order.size());
-    for(std::size_t i : order)
-    {
-      work_vertex[get(vertex_index, input_vertices[i])] = work.add_vertex(unit_points[i]);
-      constrained_vertex.push_back(get(vcm, input_vertices[i]) ? 1 : 0);
-    }
-  }
-  {
-    std::vector<std::pair<std::size_t, std::array<GR::Work_mesh::Vertex_index, 3> > > input_faces;
-    input_faces.reserve(num_faces(tmesh));
-    for(auto f : faces(tmesh))
-    {
-      const auto h = halfedge(f, tmesh);
-      const std::array<GR::Work_mesh::Vertex_index, 3> t{
-        {to_work(source(h, tmesh)), to_work(target(h, tmesh)), to_work(target(next(h, tmesh), tmesh))}};
-      input_faces.emplace_back(std::size_t((std::min)({t[0], t[1], t[2]})), t);
-    }
-    std::stable_sort(input_faces.begin(), input_faces.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    for(const auto& f : input_faces)
-      work.add_face(f.second[0], f.second[1], f.second[2]);
-  }
 
-  // Features: sharp edges of the input, border edges, user-constrained edges.
-  std::vector<char> feature_edge = GR::detect_sharp_edges(work, sharp_bounds.first, sharp_bounds.second);
-  for(auto e : work.edges())
-    if(work.is_border(e))
-      feature_edge[std::size_t(e)] = 1;
-  std::vector<char> user_edge(feature_edge.size(), 0);
-  for(edge_descriptor e : edges(tmesh))
-    if(get(ecm, e))
-    {
-      const auto h = halfedge(e, tmesh);
-      const auto wh = work.halfedge(to_work(source(h, tmesh)), to_work(target(h, tmesh)));
-      feature_edge[std::size_t(work.edge(wh))] = GR::Tracking_state::constrained_edge;
-      user_edge[std::size_t(work.edge(wh))] = 1;
-    }
-  std::vector<GR::Vertex_kind> kind = GR::classify_vertices(work, feature_edge, constrained_vertex, sharp_bounds.second);
-
-  GR::Graphcut_remesher remesher(work, feature_edge, kind, options);
+  GR::Working_copy<TriangleMesh, decltype(vpm), decltype(vertex_index), typename GT::Construct_point_3> copy(
+    tmesh, vpm, vertex_index, gt.construct_point_3_object());
+  GR::Work_mesh work;
+  copy.make(work, vcm);
+  auto features = copy.features(work, ecm, options.sharp_angle_bounds);
+  GR::Graphcut_remesher remesher(work, std::move(features.first), std::move(features.second), options);
   Graphcut_remeshing_statistics stats = remesher.run(visitor);
 #ifndef CGAL_NO_POSTCONDITIONS
   {
@@ -320,68 +257,10 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
     CGAL_postcondition_msg(broken.empty(), broken.c_str());
   }
 #endif
-
-  if(stats.number_of_flips + stats.number_of_splits + stats.number_of_collapses +
-       stats.number_of_vertex_splits == 0)
-  {
-    // Same connectivity: back to the input's scale, vertex by vertex. Vertices that never moved
-    // keep their exact input coordinates.
-    for(std::size_t i = 0; i < input_vertices.size(); ++i)
-    {
-      const auto w = to_work(input_vertices[i]);
-      const GR::Vector_3d unit = GR::to_vector(work.point(w));
-      if(unit == normalization.to_unit(input_points[i]))
-        continue;
-      const GR::Vector_3d p = normalization.from_unit(unit);
-      put(vpm, input_vertices[i], Point(p.x(), p.y(), p.z()));
-    }
-    return stats;
-  }
-
-  // New connectivity: `tmesh` is emptied element by element (so that the property maps of its
-  // owner stay alive) and receives the working mesh at the input's scale. Feature and fixed
-  // vertices are never removed, so a working vertex of an input index still at its input
-  // position is that input vertex, and keeps its exact coordinates.
-  std::vector<Point> exact(work.num_vertices());
-  std::vector<char> is_exact(work.num_vertices(), 0);
-  for(std::size_t i = 0; i < input_vertices.size(); ++i)
-  {
-    const auto w = to_work(input_vertices[i]);
-    if(!work.is_removed(w) && GR::to_vector(work.point(w)) == normalization.to_unit(input_points[i]))
-    {
-      exact[std::size_t(w)] = get(vpm, input_vertices[i]);
-      is_exact[std::size_t(w)] = 1;
-    }
-  }
-  for(auto w : work.vertices())
-    work.point(w) = [&] {
-      const GR::Vector_3d p = normalization.from_unit(GR::to_vector(work.point(w)));
-      return GR::Work_kernel::Point_3(p.x(), p.y(), p.z());
-    }();
-  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> old_faces(faces(tmesh).begin(),
-                                                                                   faces(tmesh).end());
-  for(auto f : old_faces)
-    CGAL::Euler::remove_face(halfedge(f, tmesh), tmesh);
-  std::vector<std::pair<GR::Work_mesh::Vertex_index, vertex_descriptor> > v2v;
-  std::vector<std::pair<GR::Work_mesh::Halfedge_index,
-                        typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> > h2h;
-  CGAL::copy_face_graph(work, tmesh,
-                        parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v))
-                          .halfedge_to_halfedge_output_iterator(std::back_inserter(h2h)),
-                        parameters::vertex_point_map(vpm));
-  for(const auto& p : v2v)
-  {
-    if(is_exact[std::size_t(p.first)])
-      put(vpm, p.second, exact[std::size_t(p.first)]);
-    const std::size_t i = std::size_t(p.first);
-    put(vcm, p.second, i < constrained_vertex.size() && constrained_vertex[i] && !work.is_removed(p.first));
-  }
-  // User-constrained edges are never flipped, split or collapsed: they keep their indices.
-  for(const auto& p : h2h)
-  {
-    const std::size_t i = std::size_t(work.edge(p.first));
-    put(ecm, edge(p.second, tmesh), i < user_edge.size() && user_edge[i] != 0);
-  }
+  if(stats.number_of_flips + stats.number_of_splits + stats.number_of_collapses + stats.number_of_vertex_splits == 0)
+    copy.copy_positions_back(work);
+  else
+    copy.copy_mesh_back(work, ecm, vcm);
   return stats;
 }
 

@@ -89,7 +89,8 @@ struct Graphcut_remeshing_statistics
  * \ingroup PkgGraphcutRemeshingRef
  *
  * The named parameters of the package. They are built like \cgal's own (each function returns a
- * one-element pack) and chained with \cgal's by `combine()`:
+ * one-element pack) and chained with \cgal's by `combine()`. Their defaults are listed with
+ * `graphcut_isotropic_remeshing()`:
  *
  * \code
  * namespace PMP = CGAL::Polygon_mesh_processing;
@@ -112,7 +113,7 @@ namespace graphcut_parameters {
 
 /*!
  * sets `lambda_shape`, the weight of the shape term of eq. (1) (circumradius over shortest
- * edge of each triangle). Default `1`.
+ * edge of each triangle).
  *
  * \tparam T a number type convertible to `double`
  * \param value the weight
@@ -122,7 +123,6 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(lambda_shape)
 /*!
  * sets `lambda_data`, the weight of the data term of eq. (1) (approximate squared distance of
  * each vertex to the input surface), for the mesh scaled into the unit box the method works in.
- * Default `1e7`.
  *
  * \tparam T a number type convertible to `double`
  * \param value the weight
@@ -132,7 +132,7 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(lambda_data)
 /*!
  * sets `face_data_weight`, beyond the paper: the weight, relative to `lambda_data`, of a data
  * term at each triangle's centroid, which keeps triangles from cutting chords through curved parts
- * of the input. `0` gives the paper's energy. Default `0.05`.
+ * of the input. `0` gives the paper's energy.
  *
  * \tparam T a number type convertible to `double`
  * \param value the relative weight
@@ -141,7 +141,7 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(lambda_data)
 CGAL_GRAPHCUT_REMESHING_PARAMETER(face_data_weight)
 /*!
  * sets `number_of_greedy_iterations`, the number of iterations of the final greedy phase, whose
- * candidates follow the energy gradient. Default `20`.
+ * candidates follow the energy gradient.
  *
  * \tparam T an integral type convertible to `std::size_t`
  * \param value the number of iterations
@@ -150,7 +150,7 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(face_data_weight)
 CGAL_GRAPHCUT_REMESHING_PARAMETER(number_of_greedy_iterations)
 /*!
  * sets `connectivity_period`: the connectivity is optimised after every this many iterations of
- * the first, non-greedy phase; `0` never does. Default `5`.
+ * the first, non-greedy phase; `0` never does.
  *
  * \tparam T an integral type convertible to `std::size_t`
  * \param value the period, in iterations
@@ -159,7 +159,8 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(number_of_greedy_iterations)
 CGAL_GRAPHCUT_REMESHING_PARAMETER(connectivity_period)
 /*!
  * sets `sharp_angle_bounds`, the dihedral angles theta_false and theta_true (degrees) of the
- * sharp-edge hysteresis of eq. (8). Default `(20, 35)`.
+ * sharp-edge hysteresis of eq. (8), which also bound the smooth sheets of closest-point tracking
+ * and the turn of a border corner.
  *
  * \tparam T `std::pair<double, double>`
  * \param value the lower and upper angle
@@ -168,7 +169,6 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(connectivity_period)
 CGAL_GRAPHCUT_REMESHING_PARAMETER(sharp_angle_bounds)
 /*!
  * sets `initial_temperature`, T(1) of the cooling schedule of the freedom sphere of eq. (5).
- * Default `10`.
  *
  * \tparam T a number type convertible to `double`
  * \param value the temperature
@@ -176,7 +176,7 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(sharp_angle_bounds)
  */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(initial_temperature)
 /*!
- * sets `cooling_factor`, K of the cooling schedule T(i) = T(1) K^(i-1). Default `0.95`.
+ * sets `cooling_factor`, K of the cooling schedule T(i) = T(1) K^(i-1).
  *
  * \tparam T a number type convertible to `double`
  * \param value the factor, in (0, 1]
@@ -185,7 +185,7 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(initial_temperature)
 CGAL_GRAPHCUT_REMESHING_PARAMETER(cooling_factor)
 /*!
  * sets `smoothing_step`, the factor gamma of the displacements of the smoothing candidates.
- * Default `0.06`.
+ *
  *
  * \tparam T a number type convertible to `double`
  * \param value the factor
@@ -194,7 +194,7 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(cooling_factor)
 CGAL_GRAPHCUT_REMESHING_PARAMETER(smoothing_step)
 /*!
  * sets `visitor`, called after each iteration with a `Graphcut_remeshing_progress`; returning
- * `false` stops the run and leaves a valid mesh. Default: a visitor that never stops.
+ * `false` stops the run and leaves a valid mesh.
  *
  * \tparam T a callable `bool(const Graphcut_remeshing_progress&)`
  * \param value the visitor, copied
@@ -203,7 +203,7 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(smoothing_step)
 CGAL_GRAPHCUT_REMESHING_PARAMETER(visitor)
 /*!
  * sets `do_connectivity_optimization`: whether to run the connectivity optimisation of section 3
- * of the paper; with `false` the connectivity of the mesh is kept. Default `true`.
+ * of the paper; with `false` the connectivity of the mesh is kept.
  *
  * \tparam T `bool`
  * \param value whether to change the connectivity

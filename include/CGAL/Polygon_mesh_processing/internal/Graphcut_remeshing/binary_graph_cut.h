@@ -293,52 +293,62 @@ private:
   // Graph construction in the mapped variables y = x xor m. A polynomial in x becomes one in y by
   // substituting x = 1 - y for mapped variables; we accumulate unary and pairwise coefficients over
   // y, add auxiliary nodes for cubic terms, bound supermodular pairs, then cut.
-  std::vector<char> cut()
+  // The energy in y (y_i = x_i, or 1 - x_i where variable i is mapped) as the graph holds it:
+  // unaries, the pairwise coefficients of the pairs of collect_pairs() (each the sum of its
+  // contributions in the order they come), and the auxiliary nodes of the reduced cubic terms.
+  struct Reduced_energy
   {
-    const std::size_t n = m_unary.size();
-    // Variables and their graph nodes in 32 bits: the terms and arcs of a large mesh are many.
-    CGAL_precondition(n + m_terms.size() < std::size_t(no_index));
-    std::vector<double> unary(n, 0.); // over y, then by node
-    // The pairwise coefficients over y, one per pair of collect_pairs(), each the sum of its
-    // contributions in the order they come.
-    std::vector<Index> pair_start, pair_other;
-    const std::size_t number_of_triples = collect_pairs(pair_start, pair_other);
-    std::vector<double> pairwise(pair_other.size(), 0.);
     // An auxiliary node w of a reduced cubic term: unary cost `unary` when w = 1, and a
     // (submodular, negative) coefficient `pairwise` on w * y for each of the three variables.
-    struct Aux { std::array<Index, 3> variables; double unary; double pairwise; };
-    std::vector<Aux> aux;
-    aux.reserve(number_of_triples);
-
-    auto add_linear = [&](Index i, double c) {
-      // c * x_i with x_i = m ? 1 - y_i : y_i
-      if(m_mapping[i]) unary[i] -= c; // the constant part is irrelevant to the cut
-      else unary[i] += c;
+    struct Aux
+    {
+      std::array<Index, 3> variables;
+      double unary;
+      double pairwise;
     };
-    auto add_pair = [&](Index i, Index j, double c) {
+
+    const std::vector<signed char>& mapping;
+    std::vector<double> unary; // over y, then by node
+    std::vector<Index> pair_start, pair_other;
+    std::vector<double> pairwise;
+    std::vector<Aux> aux;
+
+    void add_linear(Index i, double c)
+    {
+      // c * x_i with x_i = m ? 1 - y_i : y_i
+      if(mapping[i]) unary[i] -= c; // the constant part is irrelevant to the cut
+      else unary[i] += c;
+    }
+
+    void add_pair(Index i, Index j, double c)
+    {
       const Index a = (std::min)(i, j), b = (std::max)(i, j);
       Index k = pair_start[a];
       while(pair_other[k] != b)
         ++k;
       pairwise[k] += c;
-    };
-    auto add_quadratic = [&](Index i, Index j, double c) {
+    }
+
+    void add_quadratic(Index i, Index j, double c)
+    {
       if(i == j) { add_linear(i, c); return; }
       // c * x_i * x_j; with x = s + sign * y, s in {0,1}, sign in {+1,-1}
-      const double si = m_mapping[i] ? 1. : 0., gi = m_mapping[i] ? -1. : 1.;
-      const double sj = m_mapping[j] ? 1. : 0., gj = m_mapping[j] ? -1. : 1.;
+      const double si = mapping[i] ? 1. : 0., gi = mapping[i] ? -1. : 1.;
+      const double sj = mapping[j] ? 1. : 0., gj = mapping[j] ? -1. : 1.;
       unary[i] += c * gi * sj;
       unary[j] += c * gj * si;
       add_pair(i, j, c * gi * gj);
-    };
-    auto add_cubic = [&](const std::array<Index, 3>& v, double c) {
+    }
+
+    void add_cubic(const std::array<Index, 3>& v, double c)
+    {
       // In y, after the mapping, c * x0 x1 x2 is again a cubic in y with coefficient
       // c * g0 g1 g2 plus lower-order terms; expand (s + g y) products.
       std::array<double, 3> s, g;
       for(int a = 0; a < 3; ++a)
       {
-        s[a] = m_mapping[v[a]] ? 1. : 0.;
-        g[a] = m_mapping[v[a]] ? -1. : 1.;
+        s[a] = mapping[v[a]] ? 1. : 0.;
+        g[a] = mapping[v[a]] ? -1. : 1.;
       }
       for(int a = 0; a < 3; ++a)
       {
@@ -372,64 +382,92 @@ private:
         }
         aux.push_back({v, cy, -cy});
       }
-    };
+    }
+  };
 
+  // The cut in three stages: the terms expanded over y with the cubic ones reduced, the
+  // supermodular pairs bounded, the minimum cut of the graph.
+  std::vector<char> cut()
+  {
+    // Variables and their graph nodes in 32 bits: the terms and arcs of a large mesh are many.
+    CGAL_precondition(m_unary.size() + m_terms.size() < std::size_t(no_index));
+    Reduced_energy r = expand_terms();
+    bound_supermodular_pairs(r);
+    return minimum_cut(r);
+  }
+
+  Reduced_energy expand_terms() const
+  {
+    const std::size_t n = m_unary.size();
+    Reduced_energy r{m_mapping, std::vector<double>(n, 0.), {}, {}, {}, {}};
+    const std::size_t number_of_triples = collect_pairs(r.pair_start, r.pair_other);
+    r.pairwise.assign(r.pair_other.size(), 0.);
+    r.aux.reserve(number_of_triples);
     for(std::size_t i = 0; i < n; ++i)
-      add_linear(Index(i), m_unary[i]);
+      r.add_linear(Index(i), m_unary[i]);
     for(const Term& t : m_terms)
     {
       const Index i = t.variables[0], j = t.variables[1], k = t.variables[2];
-      add_linear(i, t.linear[0]);
-      add_linear(j, t.linear[1]);
-      add_quadratic(i, j, t.quadratic[0]);
+      r.add_linear(i, t.linear[0]);
+      r.add_linear(j, t.linear[1]);
+      r.add_quadratic(i, j, t.quadratic[0]);
       if(k != no_index)
       {
-        add_linear(k, t.linear[2]);
-        add_quadratic(i, k, t.quadratic[1]);
-        add_quadratic(j, k, t.quadratic[2]);
+        r.add_linear(k, t.linear[2]);
+        r.add_quadratic(i, k, t.quadratic[1]);
+        r.add_quadratic(j, k, t.quadratic[2]);
         if(t.cubic != 0)
-          add_cubic(t.variables, t.cubic);
+          r.add_cubic(t.variables, t.cubic);
       }
     }
+    return r;
+  }
 
-    // Current labelling in y: x = 0 for all, so y_i = m_i. Supermodular pairs (coefficient
-    // a > 0) are bounded by linear terms exact at y0; the submodular ones are kept (a pair whose
-    // coefficient is not negative has no arc).
+  // Current labelling in y: x = 0 for all, so y_i = m_i. Supermodular pairs (coefficient a > 0)
+  // are bounded by linear terms exact at y0; the submodular ones are kept (a pair whose
+  // coefficient is not negative has no arc).
+  void bound_supermodular_pairs(Reduced_energy& r) const
+  {
+    const std::size_t n = m_unary.size();
     for(Index i = 0; i < Index(n); ++i)
-      for(Index k = pair_start[i]; k < pair_start[i + 1]; ++k)
+      for(Index k = r.pair_start[i]; k < r.pair_start[i + 1]; ++k)
       {
-        const Index j = pair_other[k];
-        const double a = pairwise[k];
+        const Index j = r.pair_other[k];
+        const double a = r.pairwise[k];
         if(!(a > 0))
           continue;
         const bool yi = m_mapping[i] != 0, yj = m_mapping[j] != 0;
         if(yi == yj)
         {
-          unary[i] += a / 2; // a yi yj <= a (yi + yj) / 2, exact at (0,0) and (1,1)
-          unary[j] += a / 2;
+          r.unary[i] += a / 2; // a yi yj <= a (yi + yj) / 2, exact at (0,0) and (1,1)
+          r.unary[j] += a / 2;
         }
         else if(yi)
-          unary[j] += a;     // a yi yj <= a yj, exact at yj = 0
+          r.unary[j] += a;     // a yi yj <= a yj, exact at yj = 0
         else
-          unary[i] += a;     // a yi yj <= a yi, exact at yi = 0
+          r.unary[i] += a;     // a yi yj <= a yi, exact at yi = 0
       }
+  }
 
-    // The s-t graph: node index = variable, then auxiliary nodes. A node on the sink side has
-    // label 1. A pairwise a yi yj with a < 0 is a yi + (-a) yi (1 - yj): an arc j -> i of capacity
-    // -a. A positive unary is paid when the node is on the sink side (an arc from the source), a
-    // negative one when it is on the source side (an arc to the sink).
-    const std::size_t number_of_nodes = n + aux.size();
-    std::vector<double>& node_unary = unary;
+  // The s-t graph: node index = variable, then auxiliary nodes. A node on the sink side has label
+  // 1. A pairwise a yi yj with a < 0 is a yi + (-a) yi (1 - yj): an arc j -> i of capacity -a. A
+  // positive unary is paid when the node is on the sink side (an arc from the source), a negative
+  // one when it is on the source side (an arc to the sink). `r` is emptied as the graph is built.
+  std::vector<char> minimum_cut(Reduced_energy& r) const
+  {
+    const std::size_t n = m_unary.size();
+    const std::size_t number_of_nodes = n + r.aux.size();
+    std::vector<double>& node_unary = r.unary;
     node_unary.resize(number_of_nodes, 0.);
     for(Index i = 0; i < Index(n); ++i)
-      for(Index k = pair_start[i]; k < pair_start[i + 1]; ++k)
-        if(pairwise[k] < 0)
-          node_unary[i] += pairwise[k];
-    for(std::size_t q = 0; q < aux.size(); ++q)
+      for(Index k = r.pair_start[i]; k < r.pair_start[i + 1]; ++k)
+        if(r.pairwise[k] < 0)
+          node_unary[i] += r.pairwise[k];
+    for(std::size_t q = 0; q < r.aux.size(); ++q)
     {
-      node_unary[n + q] += aux[q].unary;
+      node_unary[n + q] += r.aux[q].unary;
       for(int a = 0; a < 3; ++a)
-        node_unary[n + q] += aux[q].pairwise; // w y_v = w - w (1 - y_v)
+        node_unary[n + q] += r.aux[q].pairwise; // w y_v = w - w (1 - y_v)
     }
     Max_flow flow(number_of_nodes);
     for(std::size_t i = 0; i < number_of_nodes; ++i)
@@ -437,19 +475,19 @@ private:
     node_unary = std::vector<double>();
     auto for_each_arc = [&](const auto& arc) { // arc(tail, head, capacity), capacity > 0
       for(Index i = 0; i < Index(n); ++i)
-        for(Index k = pair_start[i]; k < pair_start[i + 1]; ++k)
-          if(pairwise[k] < 0)
-            arc(pair_other[k], i, -pairwise[k]);
-      for(std::size_t q = 0; q < aux.size(); ++q)
-        for(Index v : aux[q].variables)
-          arc(v, Index(n + q), -aux[q].pairwise);
+        for(Index k = r.pair_start[i]; k < r.pair_start[i + 1]; ++k)
+          if(r.pairwise[k] < 0)
+            arc(r.pair_other[k], i, -r.pairwise[k]);
+      for(std::size_t q = 0; q < r.aux.size(); ++q)
+        for(Index v : r.aux[q].variables)
+          arc(v, Index(n + q), -r.aux[q].pairwise);
     };
     for_each_arc([&](Index u, Index v, double) { flow.count_arc(u, v); });
     for_each_arc([&](Index u, Index v, double c) { flow.add_arc(u, v, c, 0.); });
-    pair_start = std::vector<Index>();
-    pair_other = std::vector<Index>();
-    pairwise = std::vector<double>();
-    aux = std::vector<Aux>();
+    r.pair_start = std::vector<Index>();
+    r.pair_other = std::vector<Index>();
+    r.pairwise = std::vector<double>();
+    r.aux = std::vector<Reduced_energy::Aux>();
     flow.solve();
 
     std::vector<char> labels(n, 0);

@@ -1,13 +1,21 @@
 // Copyright (c) 2026 the Graphcut_remeshing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Candidate positions (section 2.3): the smoothing targets, the freedom sphere of eq. (5) and the
-// cooling schedule.
+// Candidate positions (section 2.3): per vertex, the first of angle-based smoothing, Laplacian
+// smoothing and a guided random move that lies in the freedom sphere of eq. (5) and lowers the
+// local evidence of eq. (7); the smoothing targets, the sphere and the cooling schedule.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_CANDIDATES_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_CANDIDATES_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/tracking.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
+
+#include <CGAL/Random.h>
 
 #include <boost/container/small_vector.hpp>
 
@@ -96,6 +104,173 @@ inline double temperature(double initial_temperature, double cooling_factor, std
 {
   return initial_temperature * std::pow(cooling_factor, double(iteration) - 1.0);
 }
+
+// One candidate per vertex: what the relocation offers the graph cut.
+class Candidate_generator
+{
+  using Vertex = Work_mesh::Vertex_index;
+  using Halfedge = Work_mesh::Halfedge_index;
+  using Face = Work_mesh::Face_index;
+  using Location = Feature_polylines<Work_mesh>::Location;
+
+public:
+  Candidate_generator(const Work_mesh& mesh, const Reference_surface<Work_mesh>& reference,
+                      const Feature_polylines<Work_mesh>& polylines, const Tracking_state& state,
+                      const Mesh_energy& energy, double smoothing_step)
+    : m_mesh(mesh), m_reference(reference), m_polylines(polylines), m_state(state), m_energy(energy),
+      m_smoothing_step(smoothing_step)
+  {}
+
+  // Section 2.3: the first candidate, in the order of the paper, that lies in the freedom sphere
+  // and lowers the local evidence. False when there is none. The terms of the triangles around v
+  // with v at the candidate go to `face_term`, by the triangles' halfedges to v; a free vertex's
+  // candidate lies on the reference triangle `out_face`.
+  bool propose(Vertex v, double temperature, bool greedy, CGAL::Random& rng, Vector_3d& out,
+               Location& out_location, Face& out_face, std::vector<double>& face_term) const
+  {
+    if(kind_of(v) == Vertex_kind::fixed_vertex)
+      return false;
+    const Vector_3d x = position(v);
+    const Star around = m_energy.star(v);
+    // The link from the star: around a triangle's halfedge to v come target(next(h)), then source(h).
+    Link link;
+    for(const Star::Triangle& t : around.triangles)
+      link.emplace_back(t.corners[(t.slot + 1) % 3], t.corners[(t.slot + 2) % 3]);
+    const double before = m_energy.current_local_evidence(v);
+    if(kind_of(v) == Vertex_kind::feature_vertex)
+      return propose_on_feature(around, x, link, before, temperature, greedy, rng, out, out_location, face_term);
+
+    const Local_frame& frame = m_reference.frame(m_state.closest[std::size_t(v)]);
+    const double sigma = freedom_radius(temperature, ring_radius(x, link), frame.min_radius());
+    if(!(sigma > 0))
+      return false;
+    Face face = Work_mesh::null_face(); // where the last candidate was brought onto the reference
+    auto accept = [&](const Vector_3d& c) {
+      if(!((c - x).norm() <= sigma) || !(m_energy.local_evidence(around, c, before, &face_term, face) < before))
+        return false;
+      out = c;
+      out_face = face;
+      return true;
+    };
+    // Beyond the paper: a tangent-plane move leaves a curved surface by about k d^2 / 2; bringing
+    // the candidate back onto the reference triangles keeps the data term near zero, so the shape
+    // term alone decides, as the paper intends its tangent moves to.
+    auto on_surface = [&](const Vector_3d& c) {
+      face = m_state.vertex_hint[std::size_t(v)];
+      return m_reference.closest_point(c, face);
+    };
+    if(!greedy)
+    {
+      if(accept(on_surface(x + m_smoothing_step * tangential(angle_based_target(x, link) - x, frame.normal))))
+        return true;
+      if(accept(on_surface(x + m_smoothing_step * tangential(laplacian_target(x, ring(v)) - x, frame.normal))))
+        return true;
+      // Guided random: a random direction of the tangent plane, a random length in the sphere.
+      for(int attempt = 0; attempt < 3; ++attempt)
+      {
+        const double angle = rng.get_double(0, 2 * pi);
+        const double length = sigma * rng.get_double(0.1, 1.0);
+        if(accept(on_surface(x + length * (std::cos(angle) * frame.d1 + std::sin(angle) * frame.d2))))
+          return true;
+      }
+      return false;
+    }
+    // Greedy phase: along the negative gradient of the local evidence (forward differences from
+    // its value here, kept), brought back onto the reference like the other candidates.
+    const double step = 1e-3 * sigma;
+    Vector_3d gradient;
+    for(int a = 0; a < 3; ++a)
+      gradient[a] = (m_energy.local_evidence(around, x + Vector_3d::Unit(a) * step) - before) / step;
+    if(!(gradient.norm() > 0) || !std::isfinite(gradient.norm()))
+      return false;
+    const Vector_3d descent = -gradient.normalized();
+    for(int attempt = 0; attempt < 3; ++attempt)
+      if(accept(on_surface(x + sigma * rng.get_double(0.05, 1.0) * descent)))
+        return true;
+    return false;
+  }
+
+private:
+  Vertex_kind kind_of(Vertex v) const { return m_state.kind[std::size_t(v)]; }
+  Vector_3d position(Vertex v) const { return to_vector(m_mesh.point(v)); }
+
+  // The neighbours of v, border ones too.
+  boost::container::small_vector<Vector_3d, 12> ring(Vertex v) const
+  {
+    boost::container::small_vector<Vector_3d, 12> r;
+    for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      r.push_back(position(m_mesh.source(h)));
+    return r;
+  }
+
+  // Vertices on a feature slide along their reference polyline: the 1D Laplacian towards the
+  // middle of their two feature neighbours, or a random (greedy: downhill) slide.
+  bool propose_on_feature(const Star& around, const Vector_3d& x, const Link& link, double before, double temperature,
+                          bool greedy, CGAL::Random& rng, Vector_3d& out, Location& out_location,
+                          std::vector<double>& face_term) const
+  {
+    const Location here = m_state.location[std::size_t(around.v)];
+    // The polyline is followed exactly, so its curvature does not limit the sphere.
+    const double sigma = freedom_radius(temperature, ring_radius(x, link), 1.0);
+    if(!(sigma > 0))
+      return false;
+    auto accept = [&](const Vector_3d& displacement) {
+      const Location l = m_polylines.move(here, displacement);
+      const Vector_3d c = m_polylines.point(l);
+      if(!((c - x).norm() <= sigma) || (c - x).norm() == 0 ||
+         !(m_energy.local_evidence(around, c, before, &face_term) < before))
+        return false;
+      out = c;
+      out_location = l;
+      return true;
+    };
+    const Vector_3d tangent = m_polylines.tangent(here);
+    if(!greedy)
+    {
+      const std::pair<int, Vector_3d> neighbours = feature_neighbours(around.v);
+      if(neighbours.first == 2 && accept(m_smoothing_step * (neighbours.second / 2 - x)))
+        return true;
+      for(int attempt = 0; attempt < 3; ++attempt)
+      {
+        const double sign = rng.get_bool() ? 1. : -1.;
+        if(accept(sign * sigma * rng.get_double(0.1, 1.0) * tangent))
+          return true;
+      }
+      return false;
+    }
+    const double step = 1e-3 * sigma;
+    const double forward = m_energy.local_evidence(around, m_polylines.point(m_polylines.move(here, step * tangent)));
+    const double backward = m_energy.local_evidence(around, m_polylines.point(m_polylines.move(here, -step * tangent)));
+    if(!(forward != backward))
+      return false;
+    const Vector_3d descent = forward < backward ? tangent : Vector_3d(-tangent);
+    for(int attempt = 0; attempt < 3; ++attempt)
+      if(accept(sigma * rng.get_double(0.05, 1.0) * descent))
+        return true;
+    return false;
+  }
+
+  // The number of feature neighbours of v and the sum of their positions.
+  std::pair<int, Vector_3d> feature_neighbours(Vertex v) const
+  {
+    Vector_3d sum = Vector_3d::Zero();
+    int count = 0;
+    for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      if(m_state.feature_edge[std::size_t(m_mesh.edge(h))])
+      {
+        sum += position(m_mesh.source(h));
+        ++count;
+      }
+    return {count, sum};
+  }
+
+  const Work_mesh& m_mesh;
+  const Reference_surface<Work_mesh>& m_reference;
+  const Feature_polylines<Work_mesh>& m_polylines;
+  const Tracking_state& m_state;
+  const Mesh_energy& m_energy;
+  double m_smoothing_step; // gamma of section 2.3
+};
 
 } // namespace Graphcut_remeshing
 } // namespace internal

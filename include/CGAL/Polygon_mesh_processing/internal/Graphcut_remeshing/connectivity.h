@@ -15,6 +15,8 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/sizing.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/tracking.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
@@ -71,43 +73,6 @@ struct Connectivity_counts
   std::size_t relaxed = 0;
 };
 
-// The target edge length at a point of the reference: the mean edge length of the input, shorter
-// where the surface is curved so that a chord of that length stays within `tolerance` of it
-// (l = sqrt(6 tolerance rho - 3 tolerance^2)), never below half the mean.
-struct Sizing
-{
-  double mean_length = 0;
-  double tolerance = 1e-3;
-
-  double length(const Local_frame& f) const
-  {
-    const double rho = f.min_radius();
-    if(!std::isfinite(rho))
-      return mean_length;
-    const double l2 = 6 * tolerance * rho - 3 * tolerance * tolerance;
-    const double curved = l2 > 0 ? std::sqrt(l2) : 0;
-    return (std::max)(0.5 * mean_length, (std::min)(mean_length, curved));
-  }
-};
-
-// The state of the working mesh shared with the relocation: vertex kinds and the reference
-// elements each vertex and face is tracked to, all indexed by the working mesh's indices.
-struct Tracking_state
-{
-  // Values of `feature_edge`.
-  static constexpr char sharp_or_border_edge = 1;
-  static constexpr char constrained_edge = 2; // the user's: kept as it is, never split
-
-  std::vector<char> feature_edge;            // by edge: 0, or one of the values above
-  std::vector<Vertex_kind> kind;             // by vertex
-  std::vector<Work_mesh::Vertex_index> closest; // by vertex: y_s0
-  std::vector<Work_mesh::Face_index> vertex_hint; // by vertex: nearest reference triangle
-  std::vector<Work_mesh::Face_index> face_hint;   // by face: nearest reference triangle of its centroid
-  std::vector<char> frozen;                  // by vertex: no connectivity change may touch it
-  std::vector<Feature_polylines<Work_mesh>::Location> location; // by vertex: place on its polyline
-  std::vector<Work_mesh::Face_index> edge_hint; // by edge: nearest reference triangle of its midpoint
-};
-
 class Connectivity_optimizer
 {
   using Vertex = Work_mesh::Vertex_index;
@@ -126,8 +91,7 @@ public:
   // Beyond the paper: no operation and no relaxation step turns a triangle by more than 60
   // degrees (this cosine) from the surface it replaces. Where the sampling is fine enough for the
   // shape none needs to; more folds a thin triangle along a crease or a stretched part, where the
-  // reference's normal alone can be either side's (found by a randomized test on stretched boxes
-  // and tori, where a single flip or move turned triangles by 70 to 85 degrees).
+  // reference's normal alone can be either side's.
   static constexpr double min_turn_cosine = 0.5;
   // The valence up to which a vertex split tries every way to cut the ring in two.
   static constexpr std::size_t max_exhaustive_split = 12;
@@ -194,8 +158,7 @@ public:
     // Section 3.1's smooth flip where the valence stays as regular: the six angles' minimum must
     // grow, by a margin so that rounding cannot make two flips undo each other. (The paper only
     // tries flips that make the valence more regular; around the corners of an organic mesh
-    // those are rare and its triangles stay thin: on cow this raised the mean minimum angle by
-    // 1.4 degrees and lowered the irregular vertices from 37 % to 34 %.)
+    // those are rare and its triangles would stay thin.)
     if(change == 0)
       return new_min - old_min - min_angle_margin;
     // Beyond the paper: a flip that makes the valence more regular is also kept when its
@@ -406,6 +369,29 @@ public:
     Vector_3d first, second;
   };
 
+  // The smallest angle of the triangles that split v into p, fanned to ring[i] .. ring[i + span],
+  // and q, fanned to the rest of the ring, or -1 when one of them is not acceptable (`fan` is the
+  // area vector of v's fan).
+  double split_smallest_angle(Vertex v, const std::vector<Vertex>& ring, std::size_t i, std::size_t span,
+                              const Vector_3d& p, const Vector_3d& q, const Vector_3d& fan) const
+  {
+    const std::size_t n = ring.size(), j = (i + span) % n;
+    double smallest = pi;
+    bool ok = true;
+    auto check = [&](const Vector_3d& u, const Vector_3d& w, const Vector_3d& z) {
+      ok = ok && acceptable(u, w, z, v, fan);
+      if(ok)
+        smallest = (std::min)(smallest, smallest_angle(u, w, z));
+    };
+    for(std::size_t k = 0; k < span; ++k)
+      check(p, position(ring[(i + k) % n]), position(ring[(i + k + 1) % n]));
+    for(std::size_t k = 0; k < n - span; ++k)
+      check(q, position(ring[(j + k) % n]), position(ring[(j + k + 1) % n]));
+    check(p, position(ring[j]), q);
+    check(q, position(ring[i]), p);
+    return ok ? smallest : -1;
+  }
+
   bool best_vertex_split(Vertex v, Vertex_split& best) const
   {
     if(!is_free(v) || m_mesh.degree(v) < 7)
@@ -429,8 +415,8 @@ public:
     bool found = false;
     double best_angle = 0;
     // Every split of a high valence into two sides of valence 6 or more changes the deviation
-    // alike, so none could be pruned and a fan of n triangles cost n^4 (36 s for a cone of 192);
-    // above 12 only the near-halves are tried, which also leave the lowest valences.
+    // alike, so none could be pruned and a fan of n triangles would cost n^4; above
+    // max_exhaustive_split only the near-halves are tried, which also leave the lowest valences.
     const std::size_t first_span = n <= max_exhaustive_split ? 3 : n / 2 - 1;
     const std::size_t last_span = n <= max_exhaustive_split ? n - 3 : (n + 1) / 2 + 1;
     for(std::size_t i = 0; i < n; ++i)
@@ -455,20 +441,8 @@ public:
         {
           const Vector_3d p = project(x + along * (side[0] - x), v);
           const Vector_3d q = project(x + along * (side[1] - x), v);
-          double smallest = pi;
-          bool ok = true;
-          auto check = [&](const Vector_3d& u, const Vector_3d& w, const Vector_3d& z) {
-            ok = ok && acceptable(u, w, z, v, fan);
-            if(ok)
-              smallest = (std::min)(smallest, smallest_angle(u, w, z));
-          };
-          for(std::size_t k = 0; k < span; ++k)
-            check(p, position(ring[(i + k) % n]), position(ring[(i + k + 1) % n]));
-          for(std::size_t k = 0; k < n - span; ++k)
-            check(q, position(ring[(j + k) % n]), position(ring[(j + k + 1) % n]));
-          check(p, position(ring[j]), q);
-          check(q, position(ring[i]), p);
-          if(!ok)
+          const double smallest = split_smallest_angle(v, ring, i, span, p, q, fan);
+          if(!(smallest >= 0))
             continue;
           if(!found || change < best.change || (change == best.change && smallest > best_angle))
           {
@@ -596,8 +570,7 @@ public:
              !is_acceptable_triangle(y, link[k].first, link[k].second, m_reference.normal(hint)))
             return false;
         // Beyond the paper: a move that raises the local energy is not kept. Plain smoothing
-        // undoes the fit of the relocation where the surface is curved (on fandisk it raised
-        // the RMS distance by a third).
+        // undoes the fit of the relocation where the surface is curved.
         if(m_local_energy && std::isnan(energy_here))
           energy_here = m_local_energy(v, x, std::numeric_limits<double>::infinity());
         if(m_local_energy &&
@@ -748,11 +721,7 @@ private:
     auto push = [&](Edge e) { push_gain(e, gain(e)); };
     {
       std::vector<double> first(m_mesh.num_edges(), 0);
-      for_each_index(first.size(), [&](std::size_t i) {
-        const Edge e(static_cast<Edge::size_type>(i));
-        if(!m_mesh.is_removed(e))
-          first[i] = initial_gain(e);
-      });
+      for_each_edge(m_mesh, [&](Edge e) { first[std::size_t(e)] = initial_gain(e); });
       for(Edge e : m_mesh.edges())
         push_gain(e, first[std::size_t(e)]);
     }

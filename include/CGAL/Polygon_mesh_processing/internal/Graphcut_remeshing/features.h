@@ -8,6 +8,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_FEATURES_H
 
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -30,19 +31,14 @@ double dihedral_angle(const Mesh& m, typename Mesh::Edge_index e)
   const auto h = m.halfedge(e), o = m.opposite(h);
   if(m.is_border(h) || m.is_border(o))
     return 0;
-  auto normal = [&m](typename Mesh::Halfedge_index g) {
-    return area_vector(to_vector(m.point(m.source(g))), to_vector(m.point(m.target(g))),
-                       to_vector(m.point(m.target(m.next(g)))));
-  };
-  return to_degrees(angle_between(normal(h), normal(o)));
+  return to_degrees(angle_between(face_area_vector(m, h), face_area_vector(m, o)));
 }
 
 // eq. (8): sharp above theta_true, not sharp below theta_false, and in between sharp only when it
 // continues edges above theta_true at both its ends: of the paper's "at least two neighbouring
 // edges", one at each end. (Two at the same end would also make a noisy organic mesh's in-between
-// edges sharp where strong ones meet, and their ends corners: on triceratops that gave 557 corners
-// against 441, a third of the triangles touching one, and mean angles 1.2 and 1.3 degrees worse.)
-// Indexed by edge index.
+// edges sharp where strong ones meet, and their ends corners, which costs the triangles around
+// them their quality.) Indexed by edge index.
 template <typename Mesh>
 std::vector<char> detect_sharp_edges(const Mesh& m, double theta_false, double theta_true)
 {
@@ -85,7 +81,7 @@ enum class Vertex_kind : char
 // costs quality there.
 template <typename Mesh>
 std::vector<Vertex_kind> classify_vertices(const Mesh& m, const std::vector<char>& feature_edge,
-                                           const std::vector<char>& constrained_vertex, double corner_angle = 35)
+                                           const std::vector<char>& constrained_vertex, double corner_angle)
 {
   std::vector<Vertex_kind> kind(m.number_of_vertices(), Vertex_kind::free_vertex);
   for(auto v : m.vertices())

@@ -89,11 +89,7 @@ inline std::size_t folded_edges(const Work_mesh& m, const std::vector<char>* ski
     const auto h = m.halfedge(e), o = m.opposite(h);
     if(m.is_border(h) || m.is_border(o) || (skip && (*skip)[std::size_t(e)]))
       continue;
-    auto normal = [&m](Work_mesh::Halfedge_index g) {
-      return area_vector(to_vector(m.point(m.source(g))), to_vector(m.point(m.target(g))),
-                         to_vector(m.point(m.target(m.next(g)))));
-    };
-    const Vector_3d a = normal(h), b = normal(o);
+    const Vector_3d a = face_area_vector(m, h), b = face_area_vector(m, o);
     if(a.dot(b) < -0.5 * a.norm() * b.norm())
       ++folds;
   }

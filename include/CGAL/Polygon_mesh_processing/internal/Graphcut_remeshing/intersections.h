@@ -86,7 +86,7 @@ public:
 
     const std::size_t nf = m_mesh.num_faces();
     std::vector<char> query(nf, 0);
-    for_each_face([&](Face f) {
+    for_each_face(m_mesh, [&](Face f) {
       for(Vertex v : m_triangles[std::size_t(f)])
         query[std::size_t(f)] |= touched[std::size_t(v)];
     });
@@ -108,7 +108,7 @@ public:
     // (each box made once, in single precision: a triangle has a few candidates).
     {
       std::vector<Small_box> boxes(nf);
-      for_each_face([&](Face f) { boxes[std::size_t(f)] = current_box(f); });
+      for_each_face(m_mesh, [&](Face f) { boxes[std::size_t(f)] = current_box(f); });
       collect_by_blocks(m_candidates.size(), out, [&](std::size_t i, std::vector<Face_pair>& found) {
         const Face_pair& p = m_candidates[i];
         if((query[std::size_t(p.first)] || query[std::size_t(p.second)]) &&
@@ -274,9 +274,27 @@ private:
       m_valid = false;
       return;
     }
-    m_triangles.resize(nf, no_triangle());
     std::vector<char> changed(nf, 0);
     std::vector<Face> changed_faces; // those still in the mesh
+    const std::size_t number_changed = find_changed_triangles(changed, changed_faces);
+    if(number_changed == 0)
+      return;
+    // Each changed triangle scans its cells; beyond an eighth of them a new grid costs less.
+    if(8 * number_changed > nf || !update_grid(changed, changed_faces))
+    {
+      m_valid = false;
+      return;
+    }
+    update_candidate_pairs(changed, changed_faces);
+  }
+
+  // By face, whether it was put on other vertices (when the connectivity changed) or one of its
+  // vertices drifted past the margin (those vertices anchored again); the changed faces still in
+  // the mesh; the number of changed faces.
+  std::size_t find_changed_triangles(std::vector<char>& changed, std::vector<Face>& changed_faces)
+  {
+    const std::size_t nf = m_mesh.num_faces(), nv = m_mesh.num_vertices();
+    m_triangles.resize(nf, no_triangle());
     std::size_t number_changed = 0;
     if(m_reconnected)
     {
@@ -301,10 +319,7 @@ private:
     const double nan = std::numeric_limits<double>::quiet_NaN();
     m_anchor.resize(nv, {{nan, nan, nan}}); // new vertices have drifted
     std::vector<char> drift(nv, 0);
-    for_each_index(nv, [&](std::size_t i) {
-      const Vertex v(static_cast<Vertex::size_type>(i));
-      drift[i] = !m_mesh.is_removed(v) && drifted(v);
-    });
+    for_each_vertex(m_mesh, [&](Vertex v) { drift[std::size_t(v)] = drifted(v); });
     for(Vertex v : m_mesh.vertices())
       if(drift[std::size_t(v)])
       {
@@ -319,28 +334,21 @@ private:
               changed_faces.push_back(m_mesh.face(h));
             }
       }
-    if(number_changed == 0)
-      return;
-    // Each changed triangle scans its cells; beyond an eighth of them a new grid costs less.
-    if(8 * number_changed > nf)
-    {
-      m_valid = false;
-      return;
-    }
+    return number_changed;
+  }
 
-    // The grid: the entries of changed triangles out, those of their new boxes in, each bucket
-    // still by low-cell axes.
-    m_face_box.resize(nf);
+  // The grid: the entries of changed triangles out, those of their new boxes in, each bucket still
+  // by low-cell axes. False, and the grid left as it was, when the buckets would grow too full.
+  bool update_grid(const std::vector<char>& changed, const std::vector<Face>& changed_faces)
+  {
+    m_face_box.resize(m_mesh.num_faces());
     for(Face f : changed_faces)
       m_face_box[std::size_t(f)] = grown_box(f);
     std::vector<Entry> added;
     std::vector<std::size_t> added_start;
     grid_entries(changed_faces, false, added, added_start);
     if(m_entries.size() + added.size() > 16 * m_buckets)
-    {
-      m_valid = false;
-      return;
-    }
+      return false;
     std::vector<Entry> merged;
     merged.reserve(m_entries.size() + added.size());
     std::vector<std::size_t> start(m_buckets + 1);
@@ -364,10 +372,14 @@ private:
     start[m_buckets] = merged.size();
     m_entries.swap(merged);
     m_start.swap(start);
+    return true;
+  }
 
-    // The candidates: those of unchanged triangles kept, those of changed ones found in the cells
-    // of their boxes by the rule of make_candidates(); a pair of two changed triangles from the
-    // one of lower index.
+  // The candidates: those of unchanged triangles kept, those of changed ones found in the cells of
+  // their boxes by the rule of make_candidates(); a pair of two changed triangles from the one of
+  // lower index.
+  void update_candidate_pairs(const std::vector<char>& changed, const std::vector<Face>& changed_faces)
+  {
     m_candidates.erase(std::remove_if(m_candidates.begin(), m_candidates.end(),
                                       [&](const Face_pair& p) {
                                         return changed[std::size_t(p.first)] || changed[std::size_t(p.second)];
@@ -515,17 +527,6 @@ private:
   static std::array<Vertex, 3> no_triangle()
   {
     return {{Work_mesh::null_vertex(), Work_mesh::null_vertex(), Work_mesh::null_vertex()}};
-  }
-
-  // function(f) for each face, in parallel.
-  template <typename Function>
-  void for_each_face(const Function& function) const
-  {
-    for_each_index(m_mesh.num_faces(), [&](std::size_t i) {
-      const Face f(static_cast<Face::size_type>(i));
-      if(!m_mesh.is_removed(f))
-        function(f);
-    });
   }
 
   static void sort_pairs(std::vector<Face_pair>& pairs)

@@ -7,7 +7,6 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_REFERENCE_SURFACE_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_REFERENCE_SURFACE_H
 
-#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
@@ -18,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -27,6 +27,36 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Graphcut_remeshing {
 
+// The frame of a reference point: the surface normal and the principal directions, with the
+// principal curvatures k1 (along d1, the larger in absolute value) and k2 (along d2).
+struct Local_frame
+{
+  Vector_3d origin = Vector_3d::Zero();
+  Vector_3d normal = Vector_3d::UnitZ();
+  Vector_3d d1 = Vector_3d::UnitX();
+  Vector_3d d2 = Vector_3d::UnitY();
+  double k1 = 0;
+  double k2 = 0;
+
+  // The smallest principal radius 1 / max |k|, infinite where the surface is flat.
+  double min_radius() const
+  {
+    const double k = (std::max)(std::abs(k1), std::abs(k2));
+    return k > 0 ? 1.0 / k : std::numeric_limits<double>::infinity();
+  }
+};
+
+// eq. (4) in the frame at the reference point: d / (d + |rho_i|) = d |k_i| / (d |k_i| + 1), so a
+// flat direction (k = 0, rho infinite) contributes nothing.
+inline double squared_distance_approximation(const Vector_3d& x, const Local_frame& f, double epsilon)
+{
+  const Vector_3d v = x - f.origin;
+  const double x1 = v.dot(f.d1), x2 = v.dot(f.d2), x3 = v.dot(f.normal);
+  const double d = (std::min)(epsilon, std::abs(x3));
+  const double w1 = d * std::abs(f.k1), w2 = d * std::abs(f.k2);
+  return w1 / (w1 + 1) * x1 * x1 + w2 / (w2 + 1) * x2 * x2 + x3 * x3;
+}
+
 template <typename Mesh>
 class Reference_surface
 {
@@ -34,11 +64,9 @@ public:
   using Vertex = typename Mesh::Vertex_index;
   using Face = typename Mesh::Face_index;
 
-  // Triangles whose normals are within 20 degrees (the lower sharp-edge bound) count as one
-  // smooth sheet for closest-point tracking.
-  static constexpr double smooth_cosine = 0.93969262078590838; // cos(20 degrees)
-
-  explicit Reference_surface(const Mesh& m) : m_mesh(m)
+  // Triangles whose normals make less than `smooth_angle` (degrees; the lower sharp-edge bound
+  // theta_false of eq. (8)) count as one smooth sheet for closest-point tracking.
+  Reference_surface(const Mesh& m, double smooth_angle) : m_mesh(m), m_smooth_cosine(std::cos(smooth_angle * (pi / 180)))
   {
     collect_faces();
     compute_frames();
@@ -167,37 +195,7 @@ public:
       }
       if(!(d < best))
       {
-        // Where the reference is smooth and concave a triangle sharing an edge can be closer
-        // although the closest point of this one is not on that edge: look at the three before
-        // stopping. Not across a sharp edge: there the other sheet may be closer (a thin part,
-        // a concave crease) and tracking must stay on the side it came from.
-        next_face = hint;
-        // With the closest point inside this triangle, a neighbour can only be closer across a
-        // dihedral that is concave on the side of x: elsewhere its points are no closer than
-        // the common edge, which is no closer than this triangle's plane.
-        const bool inside = w[0] > 0 && w[1] > 0 && w[2] > 0;
-        const double height = r.normal.dot(x) - r.offset;
-        for(int i : {2, 0, 1}) // the order of the face's halfedges
-        {
-          if(!((r.smooth_across >> i) & 1) || (inside && !(height * r.rise[i] > 0)))
-            continue;
-          const Face o = r.across[i];
-          // The distance to a triangle is at least the distance to its plane.
-          const Face_record& ro = m_faces[std::size_t(o)];
-          const double to_plane = ro.normal.dot(x) - ro.offset;
-          if(to_plane * to_plane > d * (1 + 1e-9))
-            continue;
-          std::array<double, 3> wo;
-          const Vector_3d co = project(x, o, wo);
-          const double dn = (x - co).squaredNorm();
-          if(dn < d)
-          {
-            d = dn;
-            next_face = o;
-            wg = wo;
-            cg = co;
-          }
-        }
+        next_face = closer_smooth_neighbour(x, hint, w, d, wg, cg);
         if(next_face == hint || !(d < best))
           break;
       }
@@ -207,6 +205,45 @@ public:
       c = cg;
     }
     return c;
+  }
+
+  // Where the reference is smooth and concave a triangle sharing an edge with f can be closer to x
+  // than f's closest point (of weights w, at squared distance d) although that point is not on the
+  // edge: the closest of the three, with its point (cg, weights wg) and its squared distance in
+  // d, or f when none is closer. Not across a sharp edge: there the other sheet may be closer (a
+  // thin part, a concave crease) and tracking must stay on the side it came from.
+  Face closer_smooth_neighbour(const Vector_3d& x, Face f, const std::array<double, 3>& w, double& d,
+                               std::array<double, 3>& wg, Vector_3d& cg) const
+  {
+    const Face_record& r = m_faces[std::size_t(f)];
+    Face next_face = f;
+    // With the closest point inside f, a neighbour can only be closer across a dihedral that is
+    // concave on the side of x: elsewhere its points are no closer than the common edge, which is
+    // no closer than f's plane.
+    const bool inside = w[0] > 0 && w[1] > 0 && w[2] > 0;
+    const double height = r.normal.dot(x) - r.offset;
+    for(int i : {2, 0, 1}) // the order of the face's halfedges
+    {
+      if(!((r.smooth_across >> i) & 1) || (inside && !(height * r.rise[i] > 0)))
+        continue;
+      const Face o = r.across[i];
+      // The distance to a triangle is at least the distance to its plane.
+      const Face_record& ro = m_faces[std::size_t(o)];
+      const double to_plane = ro.normal.dot(x) - ro.offset;
+      if(to_plane * to_plane > d * (1 + 1e-9))
+        continue;
+      std::array<double, 3> wo;
+      const Vector_3d co = project(x, o, wo);
+      const double dn = (x - co).squaredNorm();
+      if(dn < d)
+      {
+        d = dn;
+        next_face = o;
+        wg = wo;
+        cg = co;
+      }
+    }
+    return next_face;
   }
 
   // The frame at point c of triangle f, of barycentric coordinates w.
@@ -266,7 +303,7 @@ private:
   {
     std::array<Vertex, 3> vertices;  // in the order of the face's halfedges
     std::array<Face, 3> across;      // the triangle across the edge opposite vertices[i], or null
-    unsigned char smooth_across = 0; // bit i: across[i] is within smooth_cosine of this triangle
+    unsigned char smooth_across = 0; // bit i: across[i] is within the smooth angle of this triangle
     bool needle = false;             // is_needle_or_cap
     Vector_3d normal = Vector_3d::UnitZ();
     double offset = 0;                // the plane is normal . x = offset
@@ -323,19 +360,15 @@ private:
         r.across[i] = m_mesh.is_border(o) ? Mesh::null_face() : m_mesh.face(o);
       }
     }
-    auto area_vector_of = [&](Face f) {
-      const std::array<Vertex, 3>& t = m_faces[std::size_t(f)].vertices;
-      return area_vector(point(t[0]), point(t[1]), point(t[2]));
-    };
     for(Face f : m_mesh.faces())
     {
       Face_record& r = m_faces[std::size_t(f)];
-      const Vector_3d n = area_vector_of(f);
+      const Vector_3d n = face_area_vector(m_mesh, m_mesh.halfedge(f));
       for(int i = 0; i < 3; ++i)
         if(r.across[i] != Mesh::null_face())
         {
-          const Vector_3d no = area_vector_of(r.across[i]);
-          if(n.dot(no) > smooth_cosine * n.norm() * no.norm())
+          const Vector_3d no = face_area_vector(m_mesh, m_mesh.halfedge(r.across[i]));
+          if(n.dot(no) > m_smooth_cosine * n.norm() * no.norm())
             r.smooth_across |= static_cast<unsigned char>(1 << i);
         }
       r.normal = n.norm() > 0 ? Vector_3d(n.normalized()) : Vector_3d::Zero();
@@ -349,11 +382,7 @@ private:
   void compute_frames()
   {
     m_frames.assign(m_mesh.num_vertices(), Local_frame());
-    for_each_index(m_mesh.num_vertices(), [&](std::size_t i) {
-      const Vertex v(static_cast<typename Vertex::size_type>(i));
-      if(!m_mesh.is_removed(v))
-        compute_frame(v, m_frames[i]);
-    });
+    for_each_vertex(m_mesh, [&](Vertex v) { compute_frame(v, m_frames[std::size_t(v)]); });
   }
 
   void compute_frame(Vertex v, Local_frame& f) const
@@ -424,6 +453,7 @@ private:
   std::vector<Vector_3d> m_points;     // by vertex
   std::vector<Face_record> m_faces;    // by face
   std::vector<Local_frame> m_frames;
+  double m_smooth_cosine;
 };
 
 } // namespace Graphcut_remeshing

@@ -7,6 +7,9 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_WORK_MESH_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_WORK_MESH_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
+
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -28,6 +31,44 @@ std::array<typename Mesh::Vertex_index, 3> face_vertices(const Mesh& m, typename
 {
   const auto h = m.halfedge(f);
   return {{m.source(h), m.target(h), m.target(m.next(h))}};
+}
+
+// Twice the area vector of the face of h, from the source of h round the face.
+template <typename Mesh>
+Vector_3d face_area_vector(const Mesh& m, typename Mesh::Halfedge_index h)
+{
+  return area_vector(to_vector(m.point(m.source(h))), to_vector(m.point(m.target(h))),
+                     to_vector(m.point(m.target(m.next(h)))));
+}
+
+// function(x) for every element x of m of the index type Index (n slots, the removed ones left
+// out), as independent items: in parallel where TBB is.
+template <typename Index, typename Mesh, typename Function>
+void for_each_live(const Mesh& m, std::size_t n, const Function& function)
+{
+  for_each_index(n, [&](std::size_t i) {
+    const Index x(static_cast<typename Index::size_type>(i));
+    if(!m.is_removed(x))
+      function(x);
+  });
+}
+
+template <typename Mesh, typename Function>
+void for_each_vertex(const Mesh& m, const Function& function)
+{
+  for_each_live<typename Mesh::Vertex_index>(m, m.num_vertices(), function);
+}
+
+template <typename Mesh, typename Function>
+void for_each_edge(const Mesh& m, const Function& function)
+{
+  for_each_live<typename Mesh::Edge_index>(m, m.num_edges(), function);
+}
+
+template <typename Mesh, typename Function>
+void for_each_face(const Mesh& m, const Function& function)
+{
+  for_each_live<typename Mesh::Face_index>(m, m.num_faces(), function);
 }
 
 // By vertex of `after`: whether it is new, moved, or on a triangle that is new or on other

@@ -1,0 +1,222 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The user's mesh as the method's working mesh and back: the working copy in the unit box (a
+// Surface_mesh over doubles, whatever the user's mesh type and kernel), its features, and the
+// result written back into the user's mesh with the input's exact coordinates where a vertex
+// did not move.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_WORKING_COPY_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_WORKING_COPY_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/normalization.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/tracking.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
+
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <iterator>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Graphcut_remeshing {
+
+// `VertexPointMap` and `VertexIndexMap` are the user's maps of `TriangleMesh`; `Construct_point`
+// makes the user's points from three doubles.
+template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap, typename Construct_point>
+class Working_copy
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using edge_descriptor = typename boost::graph_traits<TriangleMesh>::edge_descriptor;
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  using Work_vertex = Work_mesh::Vertex_index;
+
+public:
+  Working_copy(TriangleMesh& tmesh, VertexPointMap vpm, VertexIndexMap vertex_index, Construct_point construct_point)
+    : m_tmesh(tmesh), m_vpm(vpm), m_vertex_index(vertex_index), m_construct_point(construct_point)
+  {}
+
+  // The working copy, scaled into the unit box. Its vertices follow a Hilbert curve and its faces
+  // their first vertex: neighbours on the surface are then near in memory, which keeps the cost
+  // per vertex of an iteration flat on large meshes. `vcm` tells the user's fixed vertices.
+  template <typename VertexConstrainedMap>
+  void make(Work_mesh& work, const VertexConstrainedMap& vcm)
+  {
+    m_input_vertices.reserve(num_vertices(m_tmesh));
+    m_input_points.reserve(num_vertices(m_tmesh));
+    for(vertex_descriptor v : vertices(m_tmesh))
+    {
+      m_input_vertices.push_back(v);
+      m_input_points.push_back(to_vector(get(m_vpm, v)));
+    }
+    m_normalization = Unit_box_normalization(m_input_points);
+    work.reserve(static_cast<Work_mesh::size_type>(num_vertices(m_tmesh)),
+                 static_cast<Work_mesh::size_type>(num_edges(m_tmesh)),
+                 static_cast<Work_mesh::size_type>(num_faces(m_tmesh)));
+    m_work_vertex.resize(m_input_vertices.size());
+    add_vertices(work, vcm);
+    add_faces(work);
+  }
+
+  // By edge of the working copy: the sharp edges of eq. (8) (hysteresis bounds in degrees),
+  // border edges, and the user's constrained edges (`ecm`), those as
+  // Tracking_state::constrained_edge; the kinds of the vertices with them, where a border that
+  // turns by more than the upper bound is a corner.
+  template <typename EdgeConstrainedMap>
+  std::pair<std::vector<char>, std::vector<Vertex_kind> > features(const Work_mesh& work, const EdgeConstrainedMap& ecm,
+                                                                   const std::pair<double, double>& sharp_bounds)
+  {
+    std::vector<char> feature_edge = detect_sharp_edges(work, sharp_bounds.first, sharp_bounds.second);
+    for(auto e : work.edges())
+      if(work.is_border(e))
+        feature_edge[std::size_t(e)] = 1;
+    m_user_edge.assign(feature_edge.size(), 0);
+    for(edge_descriptor e : edges(m_tmesh))
+      if(get(ecm, e))
+      {
+        const auto h = halfedge(e, m_tmesh);
+        const auto wh = work.halfedge(to_work(source(h, m_tmesh)), to_work(target(h, m_tmesh)));
+        feature_edge[std::size_t(work.edge(wh))] = Tracking_state::constrained_edge;
+        m_user_edge[std::size_t(work.edge(wh))] = 1;
+      }
+    std::vector<Vertex_kind> kind = classify_vertices(work, feature_edge, m_constrained_vertex, sharp_bounds.second);
+    return {std::move(feature_edge), std::move(kind)};
+  }
+
+  // Same connectivity: back to the input's scale, vertex by vertex. Vertices that never moved
+  // keep their exact input coordinates.
+  void copy_positions_back(const Work_mesh& work)
+  {
+    for(std::size_t i = 0; i < m_input_vertices.size(); ++i)
+    {
+      const Vector_3d unit = to_vector(work.point(to_work(m_input_vertices[i])));
+      if(unit == m_normalization.to_unit(m_input_points[i]))
+        continue;
+      const Vector_3d p = m_normalization.from_unit(unit);
+      put(m_vpm, m_input_vertices[i], m_construct_point(p.x(), p.y(), p.z()));
+    }
+  }
+
+  // New connectivity: `tmesh` is emptied element by element (so that the property maps of its
+  // owner stay alive) and receives the working mesh (changed to the input's scale) with the
+  // constrained maps updated. Feature and fixed vertices are never removed, so a working vertex of
+  // an input index still at its input position is that input vertex, and keeps its exact
+  // coordinates.
+  template <typename EdgeConstrainedMap, typename VertexConstrainedMap>
+  void copy_mesh_back(Work_mesh& work, EdgeConstrainedMap& ecm, VertexConstrainedMap& vcm)
+  {
+    std::vector<Point> exact(work.num_vertices());
+    std::vector<char> is_exact(work.num_vertices(), 0);
+    for(std::size_t i = 0; i < m_input_vertices.size(); ++i)
+    {
+      const Work_vertex w = to_work(m_input_vertices[i]);
+      if(!work.is_removed(w) && to_vector(work.point(w)) == m_normalization.to_unit(m_input_points[i]))
+      {
+        exact[std::size_t(w)] = get(m_vpm, m_input_vertices[i]);
+        is_exact[std::size_t(w)] = 1;
+      }
+    }
+    for(Work_vertex w : work.vertices())
+    {
+      const Vector_3d p = m_normalization.from_unit(to_vector(work.point(w)));
+      work.point(w) = Work_kernel::Point_3(p.x(), p.y(), p.z());
+    }
+    std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> old_faces(faces(m_tmesh).begin(),
+                                                                                     faces(m_tmesh).end());
+    for(auto f : old_faces)
+      CGAL::Euler::remove_face(halfedge(f, m_tmesh), m_tmesh);
+    std::vector<std::pair<Work_vertex, vertex_descriptor> > v2v;
+    std::vector<std::pair<Work_mesh::Halfedge_index, typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> > h2h;
+    CGAL::copy_face_graph(work, m_tmesh,
+                          parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v))
+                            .halfedge_to_halfedge_output_iterator(std::back_inserter(h2h)),
+                          parameters::vertex_point_map(m_vpm));
+    for(const auto& p : v2v)
+    {
+      if(is_exact[std::size_t(p.first)])
+        put(m_vpm, p.second, exact[std::size_t(p.first)]);
+      const std::size_t i = std::size_t(p.first);
+      put(vcm, p.second, i < m_constrained_vertex.size() && m_constrained_vertex[i] && !work.is_removed(p.first));
+    }
+    // User-constrained edges are never flipped, split or collapsed: they keep their indices.
+    for(const auto& p : h2h)
+    {
+      const std::size_t i = std::size_t(work.edge(p.first));
+      put(ecm, edge(p.second, m_tmesh), i < m_user_edge.size() && m_user_edge[i] != 0);
+    }
+  }
+
+private:
+  Work_vertex to_work(vertex_descriptor v) const { return m_work_vertex[get(m_vertex_index, v)]; }
+
+  template <typename VertexConstrainedMap>
+  void add_vertices(Work_mesh& work, const VertexConstrainedMap& vcm)
+  {
+    std::vector<Work_kernel::Point_3> unit_points;
+    unit_points.reserve(m_input_points.size());
+    for(const Vector_3d& q : m_input_points)
+    {
+      const Vector_3d p = m_normalization.to_unit(q);
+      unit_points.emplace_back(p.x(), p.y(), p.z());
+    }
+    std::vector<std::size_t> order(m_input_vertices.size());
+    for(std::size_t i = 0; i < order.size(); ++i)
+      order[i] = i;
+    CGAL::hilbert_sort(order.begin(), order.end(),
+                       CGAL::Spatial_sort_traits_adapter_3<Work_kernel, decltype(CGAL::make_property_map(unit_points))>(
+                         CGAL::make_property_map(unit_points)));
+    m_constrained_vertex.reserve(order.size());
+    for(std::size_t i : order)
+    {
+      m_work_vertex[get(m_vertex_index, m_input_vertices[i])] = work.add_vertex(unit_points[i]);
+      m_constrained_vertex.push_back(get(vcm, m_input_vertices[i]) ? 1 : 0);
+    }
+  }
+
+  void add_faces(Work_mesh& work) const
+  {
+    std::vector<std::pair<std::size_t, std::array<Work_vertex, 3> > > input_faces;
+    input_faces.reserve(num_faces(m_tmesh));
+    for(auto f : faces(m_tmesh))
+    {
+      const auto h = halfedge(f, m_tmesh);
+      const std::array<Work_vertex, 3> t{
+        {to_work(source(h, m_tmesh)), to_work(target(h, m_tmesh)), to_work(target(next(h, m_tmesh), m_tmesh))}};
+      input_faces.emplace_back(std::size_t((std::min)({t[0], t[1], t[2]})), t);
+    }
+    std::stable_sort(input_faces.begin(), input_faces.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for(const auto& f : input_faces)
+      work.add_face(f.second[0], f.second[1], f.second[2]);
+  }
+
+  TriangleMesh& m_tmesh;
+  VertexPointMap m_vpm;
+  VertexIndexMap m_vertex_index;
+  Construct_point m_construct_point;
+  std::vector<vertex_descriptor> m_input_vertices;
+  std::vector<Vector_3d> m_input_points;      // as the input has them
+  Unit_box_normalization m_normalization;
+  std::vector<Work_vertex> m_work_vertex;     // by the input's vertex index
+  std::vector<char> m_constrained_vertex;     // by working vertex: the user's fixed vertices
+  std::vector<char> m_user_edge;              // by working edge: the user's constrained edges
+};
+
+} // namespace Graphcut_remeshing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_WORKING_COPY_H
