@@ -1,11 +1,11 @@
 // Copyright (c) 2026 the Graphcut_remeshing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The binary decision against brute force over all 2^n labellings, and its minimum cut against
-// Boost's Boykov-Kolmogorov max-flow.
+// The binary decision against brute force over all 2^n labellings, and its s-t graph solved by
+// a direct call of Boost's Boykov-Kolmogorov max-flow on a graph of Boost's own.
 
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/binary_graph_cut.h>
-#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/max_flow.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/st_graph.h>
 
 #include <CGAL/Random.h>
 
@@ -19,7 +19,7 @@
 #include <vector>
 
 using CGAL::Polygon_mesh_processing::internal::Graphcut_remeshing::Binary_graph_cut;
-using CGAL::Polygon_mesh_processing::internal::Graphcut_remeshing::Max_flow;
+using CGAL::Polygon_mesh_processing::internal::Graphcut_remeshing::St_graph;
 
 namespace {
 
@@ -169,8 +169,8 @@ namespace {
 
 struct Arc { std::size_t u, v; double capacity, reverse_capacity; };
 
-// Boost's maximum flow value and the nodes its source tree ends with, on the same graph with the
-// terminals as nodes n (source) and n + 1 (sink).
+// Boost's maximum flow value and the nodes its source tree ends with, by a direct call on an
+// adjacency_list of the same arcs, with the terminals as nodes n (source) and n + 1 (sink).
 double boost_max_flow(std::size_t n, const std::vector<double>& source, const std::vector<double>& sink,
                       const std::vector<Arc>& arcs, std::vector<char>& source_side)
 {
@@ -211,15 +211,38 @@ double boost_max_flow(std::size_t n, const std::vector<double>& source, const st
   return flow;
 }
 
+// The arcs of an St_graph between its nodes, and its terminal capacities, as lists (before it is
+// solved: solving changes the capacities into residual ones).
+void read_graph(const St_graph& g, std::vector<double>& source, std::vector<double>& sink, std::vector<Arc>& arcs)
+{
+  const std::size_t n = g.number_of_nodes();
+  source.assign(n, 0);
+  sink.assign(n, 0);
+  arcs.clear();
+  for(St_graph::Index u = 0; u < n + 2; ++u)
+    for(St_graph::Index a = g.first_arc(u); a < g.first_arc(u + 1); ++a)
+    {
+      const St_graph::Index v = g.head(a);
+      if(u == g.source())
+        source[v] += g.capacity(a);
+      else if(v == g.sink())
+        sink[u] += g.capacity(a);
+      else if(u < n && v < n && u < v) // each pair of arcs once, from its lower end
+        arcs.push_back({u, v, g.capacity(a), g.capacity(g.reverse(a))});
+    }
+}
+
 } // namespace
 
-TEST(MaxFlow, SameCutAsBoostOnRandomGraphs)
+TEST(StGraph, SameCutAsBoostOnAnAdjacencyListOnRandomGraphs)
 {
   // Integer capacities, so that every flow is exact and the source side of the smallest minimum
   // cut is one set, whichever order the paths were found in. Sparse random graphs and grids
-  // (the neighbourhoods of the binary decision), from a few nodes to a few thousand.
+  // (the neighbourhoods of the binary decision), from a few nodes to a few thousand; one graph's
+  // arrays serve every trial, as they do from one relocation to the next.
   CGAL::Random rng(17);
   std::size_t nontrivial = 0;
+  St_graph graph;
   for(int trial = 0; trial < 60; ++trial)
   {
     SCOPED_TRACE(trial);
@@ -256,19 +279,19 @@ TEST(MaxFlow, SameCutAsBoostOnRandomGraphs)
           arcs.push_back({u, v, double(rng.get_int(0, 9)), double(rng.get_int(0, 3))});
       }
 
-    Max_flow flow(n);
+    graph.reset(n);
     for(std::size_t i = 0; i < n; ++i)
-      flow.add_terminal_capacities(Max_flow::Index(i), source[i], sink[i]);
+      graph.add_terminal_capacities(St_graph::Index(i), source[i], sink[i]);
     for(const Arc& a : arcs)
-      flow.count_arc(Max_flow::Index(a.u), Max_flow::Index(a.v));
+      graph.count_arc(St_graph::Index(a.u), St_graph::Index(a.v));
     for(const Arc& a : arcs)
-      flow.add_arc(Max_flow::Index(a.u), Max_flow::Index(a.v), a.capacity, a.reverse_capacity);
-    flow.solve();
+      graph.add_arc(St_graph::Index(a.u), St_graph::Index(a.v), a.capacity, a.reverse_capacity);
+    const double flow = graph.solve();
     std::vector<char> ours(n);
     for(std::size_t i = 0; i < n; ++i)
-      ours[i] = flow.is_on_source_side(Max_flow::Index(i));
+      ours[i] = graph.is_on_source_side(St_graph::Index(i));
 
-    // The capacity of our cut is the maximum flow.
+    // The capacity of the cut is the maximum flow.
     double cut = 0;
     for(std::size_t i = 0; i < n; ++i)
       cut += ours[i] ? sink[i] : source[i];
@@ -276,7 +299,11 @@ TEST(MaxFlow, SameCutAsBoostOnRandomGraphs)
       cut += ours[a.u] && !ours[a.v] ? a.capacity : (!ours[a.u] && ours[a.v] ? a.reverse_capacity : 0);
     std::vector<char> theirs;
     const double maximum = boost_max_flow(n, source, sink, arcs, theirs);
+    double net_terminals = 0; // the graph keeps the difference of a node's two terminal arcs
+    for(std::size_t i = 0; i < n; ++i)
+      net_terminals += (std::min)(source[i], sink[i]);
     EXPECT_EQ(cut, maximum);
+    EXPECT_EQ(flow + net_terminals, maximum);
     EXPECT_EQ(ours, theirs);
     std::size_t on_source_side = 0;
     for(char c : ours)
@@ -284,4 +311,49 @@ TEST(MaxFlow, SameCutAsBoostOnRandomGraphs)
     nontrivial += on_source_side > 0 && on_source_side < n ? 1 : 0;
   }
   EXPECT_GT(nontrivial, 50u);
+}
+
+// Every cut of the binary decision is Boost's: the graph the decision builds, solved again by a
+// direct call of boykov_kolmogorov_max_flow on an adjacency_list of its arcs, has the same
+// source side, and the labels the decision returns follow from it.
+TEST(BinaryGraphCut, ItsGraphSolvedDirectlyByBoostGivesTheSameCut)
+{
+  CGAL::Random rng(5);
+  St_graph graph;
+  std::size_t nontrivial = 0;
+  for(int trial = 0; trial < 200; ++trial)
+  {
+    SCOPED_TRACE(trial);
+    const std::size_t n = 3 + trial;
+    Binary_graph_cut gc(n);
+    // Integer energies: the flows are exact, so both solvers' sides are the one smallest side.
+    for(std::size_t i = 0; i < n; ++i)
+      gc.add_unary(i, rng.get_int(0, 20), rng.get_int(0, 20));
+    for(const auto& t : random_triples(n, 2 * n, rng))
+    {
+      std::array<double, 8> e;
+      for(double& x : e)
+        x = rng.get_int(0, 20);
+      gc.add_term(t[0], t[1], t[2], e);
+    }
+    // What solve(graph) does, with the graph read before it is solved.
+    gc.build_graph(graph);
+    std::vector<double> source, sink;
+    std::vector<Arc> arcs;
+    read_graph(graph, source, sink, arcs);
+    graph.solve();
+    const std::vector<char> labels = gc.labels(graph);
+    std::vector<char> theirs;
+    boost_max_flow(graph.number_of_nodes(), source, sink, arcs, theirs);
+    std::size_t on_source_side = 0;
+    for(std::size_t i = 0; i < graph.number_of_nodes(); ++i)
+    {
+      EXPECT_EQ(graph.is_on_source_side(St_graph::Index(i)), theirs[i] != 0) << "node " << i;
+      on_source_side += theirs[i];
+    }
+    nontrivial += on_source_side > 0 && on_source_side < graph.number_of_nodes() ? 1 : 0;
+    EXPECT_LE(gc.energy(labels), gc.energy(std::vector<char>(n, 0)));
+    EXPECT_EQ(labels, gc.solve()) << "solve() on a graph of its own";
+  }
+  EXPECT_GT(nontrivial, 150u);
 }

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The binary decision of section 2.4: minimise a sum of unary, pairwise and triple terms over
-// binary variables (0 = keep the current position, 1 = take the candidate) with one s-t minimum cut.
+// binary variables (0 = keep the current position, 1 = take the candidate) with one s-t minimum cut,
+// Boost.Graph's boykov_kolmogorov_max_flow (st_graph.h).
 //
 // Each term is written as a multilinear polynomial. A cubic coefficient is reduced with one
 // auxiliary node (Kolmogorov & Zabih's class F3 construction). Per-variable label mappings
@@ -17,7 +18,7 @@
 
 #include <CGAL/assertions.h>
 
-#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/max_flow.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/st_graph.h>
 
 #include <algorithm>
 #include <array>
@@ -100,11 +101,43 @@ public:
     return representable_terms;
   }
 
-  // Minimises the energy, starting from the all-zero labelling, and returns the labels.
+  // Minimises the energy, starting from the all-zero labelling, and returns the labels. The s-t
+  // graph is built in `graph`, whose arrays a caller keeps from one cut to the next.
+  std::vector<char> solve(St_graph& graph)
+  {
+    build_graph(graph);
+    graph.solve();
+    return labels(graph);
+  }
+
   std::vector<char> solve()
   {
+    St_graph graph;
+    return solve(graph);
+  }
+
+  // The s-t graph of the energy in three stages: the label mappings chosen, the terms expanded
+  // over y with the cubic ones reduced and the supermodular pairs bounded, the graph made.
+  void build_graph(St_graph& graph)
+  {
     choose_mappings();
-    return cut();
+    // Variables and their graph nodes in 32 bits: the terms and arcs of a large mesh are many.
+    CGAL_precondition(m_unary.size() + m_terms.size() < std::size_t(no_index));
+    Reduced_energy r = expand_terms();
+    bound_supermodular_pairs(r);
+    make_graph(r, graph);
+  }
+
+  // The labels of the minimum cut of the graph of build_graph(), once solved.
+  std::vector<char> labels(const St_graph& graph) const
+  {
+    std::vector<char> labels(m_unary.size(), 0);
+    for(std::size_t i = 0; i < labels.size(); ++i)
+    {
+      const bool y = !graph.is_on_source_side(Index(i));
+      labels[i] = static_cast<char>(y != (m_mapping[i] != 0)); // x = y xor m
+    }
+    return labels;
   }
 
 private:
@@ -385,17 +418,6 @@ private:
     }
   };
 
-  // The cut in three stages: the terms expanded over y with the cubic ones reduced, the
-  // supermodular pairs bounded, the minimum cut of the graph.
-  std::vector<char> cut()
-  {
-    // Variables and their graph nodes in 32 bits: the terms and arcs of a large mesh are many.
-    CGAL_precondition(m_unary.size() + m_terms.size() < std::size_t(no_index));
-    Reduced_energy r = expand_terms();
-    bound_supermodular_pairs(r);
-    return minimum_cut(r);
-  }
-
   Reduced_energy expand_terms() const
   {
     const std::size_t n = m_unary.size();
@@ -453,7 +475,7 @@ private:
   // 1. A pairwise a yi yj with a < 0 is a yi + (-a) yi (1 - yj): an arc j -> i of capacity -a. A
   // positive unary is paid when the node is on the sink side (an arc from the source), a negative
   // one when it is on the source side (an arc to the sink). `r` is emptied as the graph is built.
-  std::vector<char> minimum_cut(Reduced_energy& r) const
+  void make_graph(Reduced_energy& r, St_graph& flow) const
   {
     const std::size_t n = m_unary.size();
     const std::size_t number_of_nodes = n + r.aux.size();
@@ -469,7 +491,7 @@ private:
       for(int a = 0; a < 3; ++a)
         node_unary[n + q] += r.aux[q].pairwise; // w y_v = w - w (1 - y_v)
     }
-    Max_flow flow(number_of_nodes);
+    flow.reset(number_of_nodes);
     for(std::size_t i = 0; i < number_of_nodes; ++i)
       flow.add_terminal_capacities(Index(i), (std::max)(node_unary[i], 0.), (std::max)(-node_unary[i], 0.));
     node_unary = std::vector<double>();
@@ -488,15 +510,6 @@ private:
     r.pair_other = std::vector<Index>();
     r.pairwise = std::vector<double>();
     r.aux = std::vector<Reduced_energy::Aux>();
-    flow.solve();
-
-    std::vector<char> labels(n, 0);
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const bool y = !flow.is_on_source_side(Index(i));
-      labels[i] = static_cast<char>(y != (m_mapping[i] != 0)); // x = y xor m
-    }
-    return labels;
   }
 
   double m_constant = 0;

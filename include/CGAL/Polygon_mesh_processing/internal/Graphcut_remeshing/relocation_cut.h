@@ -1,7 +1,7 @@
 // Copyright (c) 2026 the Graphcut_remeshing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The decision of section 2.4 for one relocation: the binary energy of the candidates (keep the
+// The decision of section 2.4 for each relocation: the binary energy of the candidates (keep the
 // current position or take the candidate), a table per triangle and per feature edge over its
 // moving vertices, handed to the binary graph cut.
 
@@ -34,13 +34,16 @@ public:
 
   Relocation_cut(const Work_mesh& mesh, const Mesh_energy& energy) : m_mesh(mesh), m_energy(energy) {}
 
+  // Frees the graph's arrays: a connectivity pass changes the mesh, and needs the memory more.
+  void release() { m_graph = St_graph(); }
+
   // The labels (1: take the candidate) that minimise the binary energy of the candidates: data
   // terms as unaries, triangle terms over the triangles' moving vertices. `moving[i]` is the
   // vertex of variable i (variable[v] is none for the others), at its candidate the data term
   // candidate_data[i]; the excluded candidates cannot be taken.
   std::vector<char> decide(const std::vector<Vertex>& moving, const std::vector<Vector_3d>& candidate,
                            const std::vector<double>& candidate_data, const std::vector<std::size_t>& variable,
-                           const std::vector<char>& excluded) const
+                           const std::vector<char>& excluded)
   {
     // A configuration that would fold or flatten a triangle costs more than the whole current
     // energy, so the cut, which never does worse than keeping everything, never picks it.
@@ -51,7 +54,7 @@ public:
       cut.add_unary(i, m_energy.vertex_term(moving[i]), excluded[i] ? forbidden : candidate_data[i]);
     add_triangle_terms(candidate, variable, forbidden, cut);
     add_feature_edge_terms(candidate, variable, cut);
-    return cut.solve();
+    return cut.solve(m_graph);
   }
 
 private:
@@ -151,6 +154,7 @@ private:
 
   const Work_mesh& m_mesh;
   const Mesh_energy& m_energy;
+  St_graph m_graph; // kept from one cut to the next: its arrays only grow
 };
 
 } // namespace Graphcut_remeshing

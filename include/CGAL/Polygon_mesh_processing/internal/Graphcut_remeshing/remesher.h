@@ -91,7 +91,7 @@ public:
       m_polylines(m_reference_mesh, m_reference_feature_edge, m_reference_kind), m_options(options),
       m_tracking(m_mesh, m_reference, m_polylines, m_state), m_energy(m_mesh, m_reference, m_state, options.weights),
       m_candidates(m_mesh, m_reference, m_polylines, m_state, m_energy, options.smoothing_step),
-      m_intersections(mesh)
+      m_cut(m_mesh, m_energy), m_intersections(mesh)
   {
     // The working mesh starts as the reference, index for index.
     m_tracking.start(m_reference_feature_edge, m_reference_kind);
@@ -137,6 +137,7 @@ public:
         if(!greedy && m_options.do_connectivity_optimization && m_options.connectivity_period > 0 &&
            k % m_options.connectivity_period == 0)
         {
+          m_cut.release();
           connectivity_pass(stats);
           m_energy.compute_terms();
           m_tracking.mark_all(); // new triangles, relaxed vertices
@@ -171,11 +172,10 @@ public:
     // The cut decides; should its choice make triangles that were apart intersect, the vertices of
     // those triangles keep their positions and the cut decides again (each cut is over fewer
     // candidates and never does worse than keeping everything, so the energy still does not rise).
-    const Relocation_cut cut(m_mesh, m_energy);
     std::vector<char> excluded(c.moving.size(), 0);
     for(;;)
     {
-      const std::vector<char> labels = cut.decide(c.moving, c.point, c.data, c.variable, excluded);
+      const std::vector<char> labels = m_cut.decide(c.moving, c.point, c.data, c.variable, excluded);
       std::vector<Vector_3d> previous(c.moving.size());
       std::size_t moved = 0;
       for(std::size_t i = 0; i < c.moving.size(); ++i)
@@ -401,6 +401,7 @@ private:
   Reference_tracking m_tracking;
   Mesh_energy m_energy;
   Candidate_generator m_candidates;
+  Relocation_cut m_cut;
   Sizing m_sizing;
   std::vector<char> m_intersection_frozen; // by vertex: on a face the input made intersect
   std::vector<CGAL::Bbox_3> m_keep_out;    // regions where connectivity changes made intersections
