@@ -2,8 +2,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // mesh_quality [--json] [--samples N] [--seed N] ORIGINAL [REMESHED]
-// Prints the quality figures of one mesh, or of two meshes and the distances between them.
+// mesh_quality --check ORIGINAL REMESHED
+// Prints the quality figures of one mesh, or of two meshes and the distances between them; or
+// checks that REMESHED keeps what graphcut_isotropic_remeshing promises about ORIGINAL.
 
+#include "remeshing_check.h"
 #include "tool_support.h"
 
 #include <cstdlib>
@@ -19,12 +22,18 @@ namespace {
 
 const char* const usage =
   "usage: mesh_quality [--json] [--samples N] [--seed N] ORIGINAL [REMESHED]\n"
+  "       mesh_quality --check ORIGINAL REMESHED\n"
   "\n"
   "Prints vertex and face counts, the percentage of irregular vertices, the mean per-face\n"
   "minimum and maximum angles and the extreme angles of ORIGINAL (and REMESHED). With two\n"
   "meshes it also prints the symmetric Hausdorff distance and the larger one-sided RMS\n"
   "distance, divided by ORIGINAL's bounding-box diagonal, from a Metro-style sampling.\n"
   "\n"
+  "  --check       check that REMESHED, read as it was written, is a valid triangle mesh\n"
+  "                without degenerate faces, with ORIGINAL's topology (Euler characteristic,\n"
+  "                components, border cycles), no more intersecting pairs of triangles, and\n"
+  "                ORIGINAL's corners at their exact coordinates; prints one line for each\n"
+  "                broken promise and exits with 1 if there is one, prints \"ok\" otherwise\n"
   "  --json        print a JSON object instead of a table (distances as plain ratios)\n"
   "  --samples N   face samples per mesh for the distances (default 300000)\n"
   "  --seed N      seed of the sampling (default 0)\n"
@@ -42,7 +51,7 @@ bool parse_unsigned(const std::string& text, unsigned long& value)
 
 int main(int argc, char** argv)
 {
-  bool json = false;
+  bool json = false, check = false;
   unsigned long samples = 300000, seed = 0;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i)
@@ -55,6 +64,8 @@ int main(int argc, char** argv)
     }
     if(arg == "--json")
       json = true;
+    else if(arg == "--check")
+      check = true;
     else if(arg == "--samples" || arg == "--seed")
     {
       unsigned long& target = (arg == "--samples") ? samples : seed;
@@ -79,8 +90,26 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
+  if(check && files.size() != 2)
+  {
+    std::cerr << "mesh_quality: --check expects ORIGINAL REMESHED (see --help)\n";
+    return EXIT_FAILURE;
+  }
+
   try
   {
+    if(check)
+    {
+      std::vector<std::string> notices;
+      const tools::Mesh original = tools::read_mesh(files[0], true, &notices);
+      const std::vector<std::string> broken =
+        tools::broken_promises(original, tools::read_mesh_as_written(files[1]));
+      for(const std::string& b : broken)
+        std::cout << files[1] << ": " << b << '\n';
+      if(broken.empty())
+        std::cout << "ok\n";
+      return broken.empty() ? EXIT_SUCCESS : EXIT_FAILURE;
+    }
     std::vector<tools::Mesh> meshes;
     std::vector<PMP::Mesh_quality_report> reports;
     std::vector<std::string> titles;

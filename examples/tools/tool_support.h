@@ -9,18 +9,26 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/graphcut_remeshing_validation.h>
 #include <CGAL/Polygon_mesh_processing/mesh_quality_report.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/version.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include "declared_counts.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -105,22 +113,52 @@ inline std::string diagnose_off(const std::string& path)
   return std::string();
 }
 
-// Reads a polygon mesh (OFF, OBJ, PLY, STL) as a polygon soup and checks it before making the
-// mesh: every refusal is an Input_error whose message names the defect and where it is. Repairs
-// that lose nothing are made and told in `notices`: faces with more than three sides are
-// triangulated (`triangulate`), faces given with inconsistent orientations are reoriented, and
-// points on no face are dropped. The mesh is then checked as graphcut_isotropic_remeshing() does.
-inline Mesh read_mesh(const std::string& path, bool triangulate, std::vector<std::string>* notices = nullptr)
+// The topology that remeshing keeps.
+struct Topology
+{
+  long euler = 0;
+  std::size_t components = 0;
+  std::size_t border_cycles = 0;
+  bool operator==(const Topology& t) const
+  {
+    return euler == t.euler && components == t.components && border_cycles == t.border_cycles;
+  }
+  std::string text() const
+  {
+    return "Euler characteristic " + std::to_string(euler) + ", " + std::to_string(components) + " components, " +
+           std::to_string(border_cycles) + " border cycles";
+  }
+};
+
+inline Topology topology(const Mesh& m)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  auto notice = [&](const std::string& text) {
-    if(notices != nullptr)
-      notices->push_back(path + ": " + text);
-  };
+  Topology t;
+  t.euler = long(m.number_of_vertices()) - long(m.number_of_edges()) + long(m.number_of_faces());
+  std::vector<std::size_t> component(m.number_of_faces() + m.number_of_removed_faces());
+  t.components = PMP::connected_components(m, boost::make_iterator_property_map(component.begin(), get(boost::face_index, m)));
+  std::vector<char> seen(m.number_of_halfedges() + m.number_of_removed_halfedges(), 0);
+  for(Mesh::Halfedge_index h : halfedges(m))
+    if(m.is_border(h) && !seen[std::size_t(h)])
+    {
+      ++t.border_cycles;
+      for(Mesh::Halfedge_index g = h; !seen[std::size_t(g)]; g = m.next(g))
+        seen[std::size_t(g)] = 1;
+    }
+  return t;
+}
+
+// The polygon soup of a file, refused when a count it declares cannot be (declared_counts.h),
+// when CGAL cannot read it, when it has no faces, a point that is not finite or a face that refers
+// to a point it does not have.
+inline void read_soup(const std::string& path, std::vector<Kernel::Point_3>& points,
+                      std::vector<std::vector<std::size_t> >& polygons)
+{
   if(!std::ifstream(path))
     throw Input_error(path + ": cannot open file");
-  std::vector<Kernel::Point_3> points;
-  std::vector<std::vector<std::size_t> > polygons;
+  const std::string impossible = impossible_declared_count(path);
+  if(!impossible.empty())
+    throw Input_error(path + ": " + impossible);
   bool ok = false;
   try
   {
@@ -137,8 +175,6 @@ inline Mesh read_mesh(const std::string& path, bool triangulate, std::vector<std
   }
   if(polygons.empty())
     throw Input_error(path + ": the mesh has no faces");
-  // Here, not only in the validation below, so that vertices are numbered as in the file (points
-  // on no face are dropped before the mesh is made).
   for(std::size_t i = 0; i < points.size(); ++i)
   {
     const Kernel::Point_3& p = points[i];
@@ -146,65 +182,146 @@ inline Mesh read_mesh(const std::string& path, bool triangulate, std::vector<std
       throw Input_error(path + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
   }
   for(std::size_t f = 0; f < polygons.size(); ++f)
-  {
-    const std::vector<std::size_t>& polygon = polygons[f];
-    if(polygon.size() < 3)
-      throw Input_error(path + ": face " + std::to_string(f) + " has fewer than three vertices");
-    for(std::size_t v : polygon)
+    for(std::size_t v : polygons[f])
       if(v >= points.size())
         throw Input_error(path + ": face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
                           ", but there are " + std::to_string(points.size()) + " vertices");
-    for(std::size_t a = 0; a < polygon.size(); ++a)
-      for(std::size_t b = a + 1; b < polygon.size(); ++b)
-        if(polygon[a] == polygon[b])
-          throw Input_error(path + ": face " + std::to_string(f) + " repeats vertex " + std::to_string(polygon[a]));
-  }
-  // An edge of more than two faces cannot be in a halfedge structure.
+}
+
+// How many polygons orient_polygon_soup() turned: `given` are the polygons before, over points
+// that are all distinct (merged), and the copies it added after the first `distinct` points are
+// copies of one of those.
+inline std::size_t turned_polygons(const std::vector<Kernel::Point_3>& points, std::size_t distinct,
+                                   const std::vector<std::vector<std::size_t> >& given,
+                                   const std::vector<std::vector<std::size_t> >& oriented)
+{
+  std::map<Kernel::Point_3, std::size_t> original;
+  for(std::size_t i = 0; i < distinct; ++i)
+    original.emplace(points[i], i);
+  std::size_t turned = 0;
+  for(std::size_t f = 0; f < given.size() && f < oriented.size(); ++f)
   {
-    std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::size_t> > edges;
-    for(std::size_t f = 0; f < polygons.size(); ++f)
-      for(std::size_t a = 0; a < polygons[f].size(); ++a)
-      {
-        const std::size_t u = polygons[f][a], v = polygons[f][(a + 1) % polygons[f].size()];
-        edges.push_back({{(std::min)(u, v), (std::max)(u, v)}, f});
-      }
-    std::sort(edges.begin(), edges.end());
-    for(std::size_t k = 0; k + 2 < edges.size(); ++k)
-      if(edges[k].first == edges[k + 2].first)
-        throw Input_error(path + ": edge (" + std::to_string(edges[k].first.first) + ", " +
-                          std::to_string(edges[k].first.second) + ") is non-manifold (on more than two faces)");
+    std::vector<std::size_t> p = oriented[f];
+    for(std::size_t& v : p)
+      v = v < distinct ? v : original[points[v]];
+    // The same cycle read backwards: turned.
+    const std::vector<std::size_t>& q = given[f];
+    const std::size_t n = q.size();
+    const std::size_t j = std::size_t(std::find(q.begin(), q.end(), p.empty() ? 0 : p[0]) - q.begin());
+    bool backwards = p.size() == n && n >= 3 && j < n;
+    for(std::size_t i = 0; backwards && i < n; ++i)
+      backwards = p[i] == q[(j + n - i) % n];
+    turned += backwards ? 1 : 0;
   }
+  return turned;
+}
+
+// The soup made a polygon mesh as CGAL::IO::read_polygon_mesh() makes it, each change told:
+// repeated points merged, then repair_polygon_soup() (faces with repeated or too few points,
+// repeated faces, points on no face), then orient_polygon_soup(), which orients the faces
+// consistently and gives a non-manifold vertex or edge one copy per fan of faces.
+template <typename Notice>
+void repair_soup(const std::string& path, std::vector<Kernel::Point_3>& points,
+                 std::vector<std::vector<std::size_t> >& polygons, const Notice& notice)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const std::size_t merged = PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
+  if(merged > 0)
+    notice(std::to_string(merged) + " repeated points merged");
+  const std::size_t points_before = points.size(), polygons_before = polygons.size();
+  PMP::repair_polygon_soup(points, polygons);
+  if(polygons.size() != polygons_before)
+    notice("repair_polygon_soup: " + std::to_string(polygons_before) + " faces made " + std::to_string(polygons.size()) +
+           " (faces with repeated points or fewer than three, pinched or repeated faces)");
+  if(points.size() != points_before)
+    notice(std::to_string(points_before - points.size()) + " vertices on no face dropped");
+  if(polygons.empty())
+    throw Input_error(path + ": the mesh has no faces with three distinct points");
   if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
   {
-    // Orienting fails only where it must duplicate a vertex: a non-manifold vertex.
-    std::vector<Kernel::Point_3> oriented_points = points;
-    std::vector<std::vector<std::size_t> > oriented = polygons;
-    if(!PMP::orient_polygon_soup(oriented_points, oriented) || oriented_points.size() != points.size())
-      throw Input_error(path + ": the mesh has a non-manifold vertex (its faces form more than one fan)");
-    polygons.swap(oriented);
-    notice("faces reoriented consistently");
+    const std::size_t before = points.size();
+    const std::vector<std::vector<std::size_t> > given = polygons;
+    PMP::orient_polygon_soup(points, polygons);
+    if(points.size() > before)
+      notice(std::to_string(points.size() - before) +
+             " vertices added to split non-manifold vertices and edges, one copy per fan of faces");
+    const std::size_t turned = turned_polygons(points, before, given, polygons);
+    if(turned > 0)
+      notice(std::to_string(turned) + " faces reoriented consistently (orient_polygon_soup)");
+    if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+      throw Input_error(path + ": orient_polygon_soup could not make the faces a polygon mesh");
   }
-  std::vector<char> used(points.size(), 0);
-  for(const std::vector<std::size_t>& polygon : polygons)
-    for(std::size_t v : polygon)
-      used[v] = 1;
-  const std::size_t unused = std::size_t(std::count(used.begin(), used.end(), 0));
-  if(unused > 0)
+}
+
+inline std::size_t count_degenerate_faces(const Mesh& mesh)
+{
+  std::size_t degenerate = 0;
+  for(Mesh::Face_index f : faces(mesh))
+    degenerate += CGAL::Polygon_mesh_processing::is_degenerate_triangle_face(f, mesh) ? 1 : 0;
+  return degenerate;
+}
+
+// Whether `repaired` is a valid triangle mesh without degenerate faces and with `t`'s topology.
+inline bool is_repair(Mesh& repaired, const Topology& t)
+{
+  repaired.collect_garbage();
+  return !repaired.is_empty() && CGAL::is_valid_polygon_mesh(repaired) && CGAL::is_triangle_mesh(repaired) &&
+         count_degenerate_faces(repaired) == 0 && topology(repaired) == t;
+}
+
+// Degenerate triangles repaired by CGAL where that keeps the topology: first by flipping the
+// longest edge of those whose three points are distinct (a cap of 180 degrees: CGAL's
+// remove_almost_degenerate_faces, with a threshold that only such caps reach), which keeps every
+// point; else by remove_degenerate_faces, which collapses and removes. Otherwise the mesh is left
+// as it is, for the validation to refuse.
+template <typename Notice>
+void repair_degenerate_faces(Mesh& mesh, const Notice& notice)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const std::size_t degenerate = count_degenerate_faces(mesh);
+  if(degenerate == 0)
+    return;
+  const Topology t = topology(mesh);
+  const double cap_cosine = std::cos(179.9 * CGAL_PI / 180), no_needle = 1e300, no_collapse = 0;
+  Mesh flipped = mesh;
+#if CGAL_VERSION_NR < 1060000000
+  PMP::experimental::remove_almost_degenerate_faces(flipped, cap_cosine, no_needle, no_collapse);
+#else
+  PMP::remove_almost_degenerate_faces(faces(flipped), flipped, CGAL::parameters::cap_threshold(cap_cosine)
+                                                                 .needle_threshold(no_needle)
+                                                                 .collapse_length_threshold(no_collapse));
+#endif
+  if(is_repair(flipped, t))
   {
-    std::vector<std::size_t> renumber(points.size());
-    std::vector<Kernel::Point_3> kept;
-    for(std::size_t i = 0; i < points.size(); ++i)
-      if(used[i])
-      {
-        renumber[i] = kept.size();
-        kept.push_back(points[i]);
-      }
-    for(std::vector<std::size_t>& polygon : polygons)
-      for(std::size_t& v : polygon)
-        v = renumber[v];
-    points.swap(kept);
-    notice(std::to_string(unused) + " vertices on no face dropped");
+    notice(std::to_string(degenerate) + " degenerate faces repaired by edge flips (remove_almost_degenerate_faces), "
+           "the topology kept");
+    mesh = std::move(flipped);
+    return;
   }
+  Mesh removed = mesh;
+  if(PMP::remove_degenerate_faces(removed) && is_repair(removed, t))
+  {
+    notice(std::to_string(degenerate) + " degenerate faces removed (remove_degenerate_faces), the topology kept");
+    mesh = std::move(removed);
+  }
+}
+
+// Reads a polygon mesh (OFF, OBJ, PLY, STL) as CGAL::IO::read_polygon_mesh() does and checks it:
+// every refusal is an Input_error whose message names the defect and where it is. The repairs
+// are told in `notices`: those of read_polygon_mesh (repair_soup), faces with more than three
+// sides triangulated (`triangulate`), degenerate faces removed where that keeps the topology.
+// The mesh is then checked as graphcut_isotropic_remeshing() does.
+inline Mesh read_mesh(const std::string& path, bool triangulate, std::vector<std::string>* notices = nullptr)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  auto notice = [&](const std::string& text) {
+    if(notices != nullptr)
+      notices->push_back(path + ": " + text);
+  };
+  std::vector<Kernel::Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  read_soup(path, points, polygons);
+  repair_soup(path, points, polygons, notice);
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   if(!CGAL::is_triangle_mesh(mesh))
@@ -218,9 +335,23 @@ inline Mesh read_mesh(const std::string& path, bool triangulate, std::vector<std
       throw Input_error(path + ": a face with more than three sides could not be triangulated");
     notice(std::to_string(polygons_split) + " faces with more than three sides triangulated");
   }
+  repair_degenerate_faces(mesh, notice);
   const PMP::Graphcut_remeshing_input_validation validation = PMP::validate_graphcut_remeshing_input(mesh);
   if(!validation.is_valid())
     throw Input_error(path + ": " + validation.reason);
+  return mesh;
+}
+
+// A mesh file read as it was written, without any repair: for checking what a tool wrote.
+inline Mesh read_mesh_as_written(const std::string& path)
+{
+  std::vector<Kernel::Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  read_soup(path, points, polygons);
+  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+    throw Input_error(path + ": not a polygon mesh as written (non-manifold, badly oriented or repeated points)");
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   return mesh;
 }
 

@@ -4,7 +4,7 @@
 """Drives `graphcut_remesh` as a user would: its JSON report, its repeatability, its options, its
 help, its refusals, its file formats and its progress bar on a terminal.
 
-usage: test_graphcut_remesh_cli.py GRAPHCUT_REMESH DATA_DIR
+usage: test_graphcut_remesh_cli.py GRAPHCUT_REMESH DATA_DIR [--sanitized]
 """
 import json
 import os
@@ -21,6 +21,7 @@ def run(args):
 
 
 tool, data_dir = sys.argv[1], sys.argv[2]
+sanitized = '--sanitized' in sys.argv[3:]  # the sanitizer build: slower, and more memory
 mesh = os.path.join(data_dir, 'triceratops.off')
 quality_keys = sorted(['vertices', 'faces', 'irregular_percent', 'mean_min_angle', 'mean_max_angle',
                        'min_angle', 'max_angle'])
@@ -133,12 +134,8 @@ with tempfile.TemporaryDirectory() as tmp:
         'NaN': (off([(0, 0, 0), ('nan', 0, 0), (0, 1, 0), (0, 0, 1)], tetra_faces), 'non-finite'),
         'infinite': (off([(0, 0, 0), (1, 0, 0), (0, 'inf', 0), (0, 0, 1)], tetra_faces), 'non-finite'),
         'index out of range': (off(tetra_points, tetra_faces[:3] + [(0, 3, 7)]), 'refers to vertex 7'),
-        'non-manifold edge': (off(tetra_points + [(1, 1, 1)], [(0, 1, 2), (1, 0, 3), (0, 1, 4)]), 'non-manifold'),
-        'non-manifold vertex': (off([(0, 0, 0), (1, 0, 0), (0, 1, 0), (-1, 0, 0), (0, -1, 0)],
-                                    [(0, 1, 2), (0, 3, 4)]), 'non-manifold vertex'),
-        'degenerate face': (off([(0, 0, 0), (1, 0, 0), (2, 0, 0), (0, 1, 0)], [(0, 1, 3), (1, 2, 3), (0, 2, 1)]),
-                            'degenerate'),
-        'repeated vertex': (off(tetra_points, [(0, 2, 2)]), 'repeats vertex'),
+        'only a face with a repeated point': (off(tetra_points, [(0, 2, 2)]), 'no faces with three distinct points'),
+        'only degenerate faces': (off([(0, 0, 0), (1, 0, 0), (2, 0, 0), (3, 0, 0)], tetra_faces), 'degenerate'),
     }
     for name, (text, expected) in defective.items():
         path = os.path.join(tmp, 'defective.off')
@@ -150,18 +147,83 @@ with tempfile.TemporaryDirectory() as tmp:
               "%s: exit %d, stderr %r" % (name, r.returncode, r.stderr))
         check(not os.path.exists(missing_out), "%s: an output was written" % name)
 
-    # Repairs that lose nothing are made and said: quads triangulated, unused points dropped.
+    # Repairs are made as CGAL's read_polygon_mesh makes them, and said: quads triangulated, unused
+    # points dropped, repeated points merged, non-manifold vertices and edges split, degenerate
+    # faces removed where that keeps the topology, faces reoriented.
     cube_points = [(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)]
     cube_quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
-    for name, text, expected in (('quads', off(cube_points, cube_quads), '6 faces with more than three sides'),
-                                 ('unused point', off(tetra_points + [(5, 5, 5)], tetra_faces), '1 vertices on no face')):
+    # The tetrahedron with its point 3 repeated: each face that uses it has its own copy.
+    split_points = tetra_points + [(0, 0, 1), (0, 0, 1)]
+    split_faces = [(0, 2, 1), (0, 1, 3), (1, 2, 4), (0, 5, 2)]
+    repairs = (
+        ('quads', off(cube_points, cube_quads), ['6 faces with more than three sides']),
+        ('unused point', off(tetra_points + [(5, 5, 5)], tetra_faces), ['1 vertices on no face']),
+        ('repeated points', off(split_points, split_faces), ['2 repeated points merged']),
+        ('non-manifold vertex', off([(0, 0, 0), (1, 0, 0), (0, 1, 0), (-1, 0, 0), (0, -1, 0)], [(0, 1, 2), (0, 3, 4)]),
+         ['1 vertices added to split non-manifold']),
+        ('non-manifold edge', off(tetra_points + [(1, 1, 1)], [(0, 1, 2), (1, 0, 3), (0, 1, 4)]),
+         ['vertices added to split non-manifold']),
+        ('inconsistent orientation', off(tetra_points, tetra_faces[:3] + [(0, 2, 3)]), ['faces reoriented consistently']),
+        ('degenerate face', off([(0, 0, 0), (1, 0, 0), (2, 0, 0), (0, 1, 0)], [(0, 1, 3), (1, 2, 3), (0, 2, 1)]),
+         ['1 degenerate faces repaired by edge flips (remove_almost_degenerate_faces), the topology kept']),
+    )
+    for name, text, expected in repairs:
         path = os.path.join(tmp, 'repaired.off')
         with open(path, 'w') as f:
             f.write(text)
         r = run([path, out3] + short)
-        check(r.returncode == 0 and expected in r.stderr, "%s: exit %d, stderr %r" % (name, r.returncode, r.stderr))
+        check(r.returncode == 0 and all(e in r.stderr for e in expected),
+              "%s: exit %d, stderr %r" % (name, r.returncode, r.stderr))
         check(os.path.exists(out3), "%s: no output" % name)
         os.remove(out3) if os.path.exists(out3) else None
+
+    # Counts a file declares that it cannot hold: refused in one line, at once, in little memory,
+    # before CGAL's readers size their arrays by them.
+    header = ('ply\nformat ascii 1.0\nelement vertex %d\nproperty float x\nproperty float y\n'
+              'property float z\nelement face %d\nproperty list %s int vertex_indices\nend_header\n')
+    triangle_points = '0 0 0\n1 0 0\n0 1 0\n'
+    stl_header = b'\0' * 80
+    stl_triangle = b''.join(int(v).to_bytes(4, 'little') for v in (0,) * 12) + b'\0\0'
+    hostile = {
+        'face.off': 'OFF\n3 1 0\n' + triangle_points + '1000000000 0 1 2\n',
+        'faces.off': 'OFF\n3 1000000000 0\n' + triangle_points + '3 0 1 2\n',
+        'points.off': 'OFF\n1000000000 1 0\n' + triangle_points + '3 0 1 2\n',
+        'list.ply': header % (3, 1, 'int') + triangle_points + '1000000000 0 1 2\n',
+        'faces.ply': header % (3, 1000000000, 'uchar') + triangle_points + '3 0 1 2\n',
+        'points.ply': header % (1000000000, 1, 'uchar') + triangle_points + '3 0 1 2\n',
+        'index.obj': 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 1000000000\n',
+        'negative.obj': 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -1000000000\n',
+        'count.stl': stl_header + (1000000000).to_bytes(4, 'little') + stl_triangle,
+    }
+    seconds, megabytes = (10, 400) if sanitized else (1, 100)
+    for name, content in hostile.items():
+        path = os.path.join(tmp, name)
+        with open(path, 'wb') as f:
+            f.write(content if isinstance(content, bytes) else content.encode())
+        # Timed in a child of its own, so that its peak memory is its own; outside the sanitizer
+        # build, its address space is bounded too, so that a reader that believes the count fails
+        # instead of taking the machine (and is caught by the missing 'declares').
+        probe = ('import resource, subprocess, sys, time\n'
+                 'limit = (lambda: resource.setrlimit(resource.RLIMIT_AS, (4 << 30, 4 << 30))) if sys.argv[1] == "1" else None\n'
+                 't = time.time()\n'
+                 'try:\n'
+                 '    r = subprocess.run(sys.argv[2:], capture_output=True, text=True, timeout=20, preexec_fn=limit)\n'
+                 '    code, err = r.returncode, r.stderr\n'
+                 'except subprocess.TimeoutExpired:\n'
+                 '    code, err = "timeout", ""\n'
+                 'print(code, time.time() - t, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)\n'
+                 'sys.stderr.write(err)\n')
+        p = subprocess.run([sys.executable, '-c', probe, '0' if sanitized else '1', tool, path, missing_out],
+                           capture_output=True, text=True, timeout=120)
+        code, wall, kilobytes = p.stdout.split()
+        lines = p.stderr.strip().splitlines()
+        check(code == '1' and len(lines) == 1 and not os.path.exists(missing_out),
+              "%s: exit %s, stderr %r" % (name, code, p.stderr))
+        check(float(wall) < seconds and int(kilobytes) < megabytes * 1024,
+              "%s: refused in %.2f s and %d KB (bounds %d s, %d MB)" % (name, float(wall), int(kilobytes),
+                                                                       seconds, megabytes))
+        if not name.endswith('.obj'):
+            check('declares' in p.stderr, "%s: the refusal does not say what the file declares: %r" % (name, p.stderr))
 
     # Formats: a chain of remeshings through OBJ, PLY, STL and back to OFF. Each file is written in
     # its format, read back as the next input, and holds the mesh written (the JSON figures of one

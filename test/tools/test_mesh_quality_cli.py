@@ -183,7 +183,29 @@ with tempfile.TemporaryDirectory() as tmp:
     expect_refusal('unknown option', ['--frobnicate', fandisk])
     expect_refusal('bad sample count', ['--samples', 'many', fandisk])
 
+    # 4. --check: a mesh keeps its own promises; a moved corner, a hole and a flattened
+    # triangle are each named.
+    r = run(['--check', fandisk, fandisk])
+    check(r.returncode == 0 and r.stdout.strip() == 'ok', "--check of fandisk against itself: %d %r %r" % (
+        r.returncode, r.stdout, r.stderr))
+    tetra_points = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+    tetra_faces = [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)]
+    tetra = os.path.join(tmp, 'tetra.off')
+    write_off(tetra, tetra_points, tetra_faces)
+    broken = {
+        'moved corner': ([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1.5)], tetra_faces, 'corners moved'),
+        'hole': (tetra_points, tetra_faces[:3], 'topology changed'),
+        'flat triangle': ([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0.5, 0.5, 0)], tetra_faces, 'not a valid remesh'),
+    }
+    for name, (points, faces, expected) in broken.items():
+        path = os.path.join(tmp, 'broken.off')
+        write_off(path, points, faces)
+        r = run(['--check', tetra, path])
+        check(r.returncode == 1 and expected in r.stdout, "--check, %s: %d %r %r" % (name, r.returncode, r.stdout,
+                                                                                   r.stderr))
+    expect_refusal('--check with one mesh', ['--check', tetra])
+
     r = run(['--help'])
-    check(r.returncode == 0 and 'usage' in r.stdout, "--help")
+    check(r.returncode == 0 and 'usage' in r.stdout and '--check' in r.stdout, "--help")
 
 finish("mesh_quality CLI")

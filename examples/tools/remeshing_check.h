@@ -1,0 +1,110 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What graphcut_isotropic_remeshing promises about its output, checked from outside on the input
+// and the output alone: a valid triangle mesh without degenerate triangles, the input's topology,
+// no more intersecting pairs of triangles than the input had, and the input's corners at their
+// exact coordinates. `mesh_quality --check` and the tests use it.
+
+#ifndef CGAL_GRAPHCUT_REMESHING_REMESHING_CHECK_H
+#define CGAL_GRAPHCUT_REMESHING_REMESHING_CHECK_H
+
+#include "tool_support.h"
+
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace graphcut_remeshing_tools {
+
+// The dihedral angle at the edge of `h`, in degrees (0 where flat); `h` is not on the border.
+inline double dihedral_degrees(const Mesh& m, Mesh::Halfedge_index h)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const Kernel::Vector_3 a = PMP::compute_face_normal(m.face(h), m), b = PMP::compute_face_normal(m.face(m.opposite(h)), m);
+  return std::acos((std::max)(-1.0, (std::min)(1.0, a * b))) * 180 / CGAL_PI;
+}
+
+// The vertices that may never move, found without the library's own classification: three or
+// more edges that are border edges or clearly sharp (dihedral angle above 36 degrees, one above
+// the upper bound of the hysteresis, so that rounding cannot decide), or a border that turns by
+// more than 36 degrees.
+inline std::vector<Kernel::Point_3> sure_corners(const Mesh& m)
+{
+  std::vector<Kernel::Point_3> corners;
+  for(Mesh::Vertex_index v : vertices(m))
+  {
+    int features = 0;
+    double turn = 0;
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_target(v, m))
+    {
+      if(m.is_border(m.edge(h)) || dihedral_degrees(m, h) > 36)
+        ++features;
+      if(m.is_border(h))
+      {
+        const Kernel::Vector_3 in = m.point(v) - m.point(m.source(h)), out = m.point(m.target(m.next(h))) - m.point(v);
+        const double c = in * out / std::sqrt(in.squared_length() * out.squared_length());
+        turn = std::acos((std::max)(-1.0, (std::min)(1.0, c))) * 180 / CGAL_PI;
+      }
+    }
+    if(features >= 3 || turn > 36)
+      corners.push_back(m.point(v));
+  }
+  return corners;
+}
+
+// How many of `points` are not exactly the point of a vertex of `m`.
+inline std::size_t missing_points(const std::vector<Kernel::Point_3>& points, const Mesh& m)
+{
+  std::set<std::array<double, 3> > present;
+  for(Mesh::Vertex_index v : vertices(m))
+    present.insert({{m.point(v).x(), m.point(v).y(), m.point(v).z()}});
+  std::size_t missing = 0;
+  for(const Kernel::Point_3& p : points)
+    missing += present.count({{p.x(), p.y(), p.z()}}) == 0 ? 1 : 0;
+  return missing;
+}
+
+// One line for each promise `output` breaks as the remesh of `input`; empty if it keeps them all.
+// `fixed` are points that must be kept too (constrained vertices).
+inline std::vector<std::string> broken_promises(const Mesh& input, const Mesh& output,
+                                                const std::vector<Kernel::Point_3>& fixed = {})
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  std::vector<std::string> broken;
+  const PMP::Graphcut_remeshing_input_validation validation = PMP::validate_graphcut_remeshing_input(output);
+  if(!validation.is_valid())
+  {
+    broken.push_back("not a valid remesh: " + validation.reason);
+    return broken; // the other checks assume a valid triangle mesh
+  }
+  const Topology a = topology(input), b = topology(output);
+  if(!(a == b))
+    broken.push_back("topology changed: " + a.text() + " in the input, " + b.text() + " in the output");
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > before, after;
+  PMP::self_intersections(input, std::back_inserter(before));
+  PMP::self_intersections(output, std::back_inserter(after));
+  if(after.size() > before.size())
+    broken.push_back(std::to_string(after.size()) + " intersecting pairs of triangles, " +
+                     std::to_string(before.size()) + " in the input");
+  const std::vector<Kernel::Point_3> corners = sure_corners(input);
+  const std::size_t moved = missing_points(corners, output);
+  if(moved > 0)
+    broken.push_back(std::to_string(moved) + " of the input's " + std::to_string(corners.size()) + " corners moved");
+  const std::size_t fixed_moved = missing_points(fixed, output);
+  if(fixed_moved > 0)
+    broken.push_back(std::to_string(fixed_moved) + " of " + std::to_string(fixed.size()) + " fixed points moved");
+  return broken;
+}
+
+} // namespace graphcut_remeshing_tools
+
+#endif // CGAL_GRAPHCUT_REMESHING_REMESHING_CHECK_H
