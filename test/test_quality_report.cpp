@@ -15,11 +15,13 @@
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/transform.h>
 #include <CGAL/Aff_transformation_3.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -135,6 +137,25 @@ TEST(QualityReport, FandiskFigures)
   EXPECT_LT(q.min_angle, q.mean_min_angle);
   EXPECT_GT(q.max_angle, q.mean_max_angle);
   EXPECT_LT(q.max_angle, 180);
+}
+
+TEST(QualityReport, RemovedButUncollectedElementsAreNotCounted)
+{
+  // isotropic_remeshing() leaves removed elements in a Surface_mesh; the report must see the mesh
+  // as it is, the same as after collect_garbage().
+  Mesh m = make_sphere(2);
+  CGAL::Euler::remove_face(halfedge(*faces(m).begin(), m), m);
+  CGAL::Euler::remove_face(halfedge(*std::next(faces(m).begin(), 7), m), m);
+  ASSERT_TRUE(m.has_garbage());
+  Mesh collected = m;
+  collected.collect_garbage();
+  const PMP::Mesh_quality_report q = PMP::mesh_quality_report(m), c = PMP::mesh_quality_report(collected);
+  EXPECT_EQ(q.number_of_vertices, c.number_of_vertices);
+  EXPECT_EQ(q.number_of_faces, c.number_of_faces);
+  EXPECT_EQ(q.number_of_faces, num_faces(make_sphere(2)) - 2);
+  EXPECT_DOUBLE_EQ(q.irregular_vertex_percentage, c.irregular_vertex_percentage);
+  EXPECT_DOUBLE_EQ(q.mean_min_angle, c.mean_min_angle);
+  EXPECT_DOUBLE_EQ(q.mean_max_angle, c.mean_max_angle);
 }
 
 TEST(SurfaceDistance, MeshToItselfIsZero)

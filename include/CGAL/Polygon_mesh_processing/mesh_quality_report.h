@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -100,8 +101,10 @@ Mesh_quality_report mesh_quality_report(const TriangleMesh& tm,
                                     get_const_property_map(CGAL::vertex_point, tm));
 
   Mesh_quality_report report;
-  report.number_of_vertices = num_vertices(tm);
-  report.number_of_faces = num_faces(tm);
+  // Counted over the ranges: num_vertices() and num_faces() of a Surface_mesh also count the
+  // elements removed but not yet collected, which isotropic_remeshing() leaves.
+  report.number_of_vertices = static_cast<std::size_t>(std::distance(vertices(tm).begin(), vertices(tm).end()));
+  report.number_of_faces = static_cast<std::size_t>(std::distance(faces(tm).begin(), faces(tm).end()));
 
   std::size_t irregular = 0;
   for(auto v : vertices(tm))
@@ -232,7 +235,7 @@ relative_surface_distance(const TriangleMesh1& tm1, const TriangleMesh2& tm2,
   const unsigned int seed = choose_parameter(get_parameter(np1, internal_np::random_seed), 0u);
 
   Relative_surface_distance result;
-  if(num_faces(tm1) == 0 || num_faces(tm2) == 0)
+  if(faces(tm1).begin() == faces(tm1).end() || faces(tm2).begin() == faces(tm2).end())
     return result;
 
   // One generator for both sides, so that the two sample sets are not correlated.
