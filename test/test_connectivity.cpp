@@ -282,7 +282,158 @@ std::vector<Named_mesh> scrambled_meshes()
   return meshes;
 }
 
+// --- re-sampling (Sizing::resamples()): splits and collapses to a curvature-adapted sizing ---
+
+std::size_t border_cycles(const Work& m)
+{
+  std::set<std::size_t> seen;
+  std::size_t cycles = 0;
+  for(auto h : m.halfedges())
+    if(m.is_border(h) && !seen.count(std::size_t(h)))
+    {
+      ++cycles;
+      for(auto g : CGAL::halfedges_around_face(h, m))
+        seen.insert(std::size_t(g));
+    }
+  return cycles;
+}
+
+double distance_to_feature_edges(const GR::Vector_3d& x, const Work& m, const std::vector<char>& feature)
+{
+  double best = std::numeric_limits<double>::infinity();
+  for(auto e : m.edges())
+    if(feature[std::size_t(e)])
+      best = (std::min)(best, GR::distance_to_segment(x, GR::to_vector(m.point(m.source(m.halfedge(e)))),
+                                                      GR::to_vector(m.point(m.target(m.halfedge(e))))));
+  return best;
+}
+
+// What a re-sampling pass must keep: a valid manifold mesh of the same topology (as many border
+// cycles), no degenerate or folded triangle, the corners where they were, and the feature lines:
+// every input feature edge's midpoint near an output feature edge, and the reverse.
+void expect_resampling_guarantees(const Pass_setup& s, const Work& before, double near, const std::string& name)
+{
+  const Work& m = s.mesh;
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m)) << name;
+  EXPECT_TRUE(CGAL::is_triangle_mesh(m)) << name;
+  EXPECT_EQ(euler_characteristic(m), euler_characteristic(before)) << name;
+  EXPECT_EQ(components(m), components(before)) << name;
+  EXPECT_EQ(border_cycles(m), border_cycles(before)) << name;
+  std::set<std::pair<std::size_t, std::size_t> > seen;
+  std::size_t duplicated = 0, degenerate = 0, folded = 0;
+  for(auto e : m.edges())
+  {
+    const std::size_t a = std::size_t(m.source(m.halfedge(e))), b = std::size_t(m.target(m.halfedge(e)));
+    duplicated += seen.emplace((std::min)(a, b), (std::max)(a, b)).second ? 0 : 1;
+  }
+  for(auto f : m.faces())
+  {
+    const auto t = GR::face_vertices(m, f);
+    const GR::Vector_3d a = s.point(t[0]), b = s.point(t[1]), c = s.point(t[2]);
+    if(!(GR::smallest_angle(a, b, c) > 1e-3))
+      ++degenerate;
+    else if(!(GR::area_vector(a, b, c).dot(s.reference_normal((a + b + c) / 3)) > 0))
+      ++folded;
+  }
+  EXPECT_EQ(duplicated, 0u) << name;
+  EXPECT_EQ(degenerate, 0u) << name;
+  EXPECT_EQ(folded, 0u) << name;
+  for(auto v : s.reference_mesh.vertices())
+    if(s.reference_kind[std::size_t(v)] == GR::Vertex_kind::fixed_vertex)
+    {
+      ASSERT_FALSE(m.is_removed(v)) << name << ": a corner was removed";
+      EXPECT_EQ(m.point(v), s.reference_mesh.point(v)) << name << ": a corner moved";
+    }
+  auto midpoint = [](const Work& w, Work::Edge_index e) -> GR::Vector_3d {
+    return (GR::to_vector(w.point(w.source(w.halfedge(e)))) + GR::to_vector(w.point(w.target(w.halfedge(e))))) / 2;
+  };
+  for(auto e : s.reference_mesh.edges())
+    if(s.reference_feature_edge[std::size_t(e)])
+      EXPECT_LT(distance_to_feature_edges(midpoint(s.reference_mesh, e), m, s.state.feature_edge), near)
+        << name << ": an input feature edge is lost";
+  for(auto e : m.edges())
+    if(s.state.feature_edge[std::size_t(e)])
+      EXPECT_LT(distance_to_feature_edges(midpoint(m, e), s.reference_mesh, s.reference_feature_edge), near)
+        << name << ": a feature edge where the input has none ";
+}
+
 } // namespace
+
+// The field spends the budget of the mean length: flat parts get longer edges, curved parts
+// shorter ones, and a surface curved alike everywhere (or flat) the mean length itself.
+TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)
+{
+  const Work bent = to_work_mesh(make_grid(16, 10, [](std::size_t i, std::size_t j) {
+    const double x = double(i) / 15;
+    return Point(x, double(j) / 15, x > 0.5 ? 1.2 * (x - 0.5) * (x - 0.5) : 0.0);
+  }));
+  const Work sphere = to_work_mesh(noisy_sphere(3, 0.0, 0.0, 1));
+  for(const Work* m : {&bent, &sphere})
+  {
+    const double mean = GR::mean_edge_length(*m);
+    const GR::Sizing sizing = GR::curvature_sizing(*m, Pass_setup::features_of(*m, true), mean);
+    ASSERT_TRUE(sizing.resamples());
+    const std::vector<double> area = GR::vertex_areas(*m);
+    double budget = 0, spent = 0;
+    for(auto v : m->vertices())
+    {
+      budget += area[std::size_t(v)] / (mean * mean);
+      spent += area[std::size_t(v)] / (sizing.length(v) * sizing.length(v));
+      EXPECT_GE(sizing.length(v), 0.45 * mean);
+      EXPECT_LE(sizing.length(v), 2.2 * mean);
+    }
+    EXPECT_NEAR(spent, budget, 1e-6 * budget);
+    if(m == &sphere)
+      for(auto v : m->vertices())
+        EXPECT_NEAR(sizing.length(v), mean, 0.1 * mean);
+  }
+  const GR::Sizing sizing = GR::curvature_sizing(bent, Pass_setup::features_of(bent, true), GR::mean_edge_length(bent));
+  double flat = 0, curved = 0;
+  for(auto v : bent.vertices())
+  {
+    const double x = bent.point(v).x();
+    if(x < 0.2)
+      flat = (std::max)(flat, sizing.length(v));
+    if(x > 0.8)
+      curved = (std::max)(curved, sizing.length(v));
+  }
+  EXPECT_LT(curved, 0.9 * flat);
+}
+
+// Re-sampling passes bring the edges near their targets, coarser or finer than the input (four
+// times fewer or more vertices for twice or half the length), and keep every guarantee.
+TEST(Connectivity_pass, ResamplingBringsTheEdgesToTheirTargets)
+{
+  for(const Named_mesh& input : scrambled_meshes())
+    for(double factor : {0.5, 2.0})
+    {
+      Pass_setup s(input.mesh);
+      const double mean = GR::mean_edge_length(s.reference_mesh);
+      s.sizing = GR::curvature_sizing(s.reference_mesh, s.reference_feature_edge, factor * mean);
+      const std::string name = input.name + " x" + std::to_string(factor);
+      for(int pass = 0; pass < 4; ++pass)
+      {
+        const Work before = s.mesh;
+        s.optimizer_with_features().run();
+        expect_resampling_guarantees(s, before, 0.6 * factor * mean, name + " pass " + std::to_string(pass));
+      }
+      std::size_t in_band = 0;
+      for(auto e : s.mesh.edges())
+      {
+        const auto a = s.mesh.source(s.mesh.halfedge(e)), b = s.mesh.target(s.mesh.halfedge(e));
+        const double target = (std::min)(s.sizing.length(s.state.closest[std::size_t(a)]),
+                                         s.sizing.length(s.state.closest[std::size_t(b)]));
+        const double l = (s.point(a) - s.point(b)).norm();
+        in_band += l > 0.5 * target && l < 1.5 * target ? 1 : 0;
+      }
+      // Coarsening stops where feature lines are dense (the scrambled torus) or at a border's
+      // corners (the grid): passes without relocation keep more of those edges out of the band.
+      EXPECT_GT(double(in_band), (factor < 1 ? 0.9 : 0.5) * double(s.mesh.number_of_edges())) << name;
+      const double ratio = double(s.mesh.number_of_vertices()) / double(s.reference_mesh.number_of_vertices());
+      EXPECT_GT(ratio, factor < 1 ? 2.0 : 0.15) << name;
+      EXPECT_LT(ratio, factor < 1 ? 6.0 : 0.9) << name;
+    }
+}
 
 TEST(Connectivity_pass, KeepsTheGuaranteesOnSeveralMeshes)
 {
@@ -676,12 +827,16 @@ TEST(GraphcutRemeshing, ConnectivityKeepsTheGuarantees)
   cases.push_back({"jittered box", jittered_box(1, 2, 0.5, 6, 22), false});
   cases.push_back({"torus", make_torus(40, 12, 1.0, 0.3), true});
   cases.push_back({"fandisk", load_sample_mesh("fandisk"), false});
-  for(Case& c : cases)
+  for(bool resampling : {false, true})
+  for(Case c : cases)
   {
     const Mesh input = c.mesh;
     const Work w = to_work_mesh(input);
+    c.name += resampling ? " (re-sampled)" : "";
+    c.regular = c.regular && !resampling; // re-sampling follows the curvature, not the input
     const auto stats = PMP::graphcut_isotropic_remeshing(
-      c.mesh, GP::combine(CGAL::parameters::number_of_iterations(20), GP::number_of_greedy_iterations(3)));
+      c.mesh, GP::combine(CGAL::parameters::number_of_iterations(20), GP::number_of_greedy_iterations(3),
+                          GP::resampling(resampling)));
     const Work out = to_work_mesh(c.mesh);
     EXPECT_TRUE(CGAL::is_valid_polygon_mesh(c.mesh)) << c.name;
     EXPECT_EQ(euler_characteristic(out), euler_characteristic(w)) << c.name;

@@ -92,17 +92,19 @@ std::size_t constrain_equator(const Mesh& m, EdgeConstrainedMap& ecm)
   return count;
 }
 
-// `input` as a working mesh, index for index.
+// `input` as a working mesh, index for index when `input` holds no removed element (a remeshed
+// mesh may: then its vertices are numbered in order).
 inline Work_mesh to_work_mesh(const Mesh& input)
 {
   Work_mesh w;
+  std::vector<Work_vertex> to_work(input.num_vertices());
   for(auto v : vertices(input))
-    w.add_vertex(Work_point(input.point(v).x(), input.point(v).y(), input.point(v).z()));
+    to_work[std::size_t(v)] = w.add_vertex(Work_point(input.point(v).x(), input.point(v).y(), input.point(v).z()));
   for(auto f : faces(input))
   {
     const auto h = halfedge(f, input);
-    w.add_face(Work_vertex(std::size_t(source(h, input))), Work_vertex(std::size_t(target(h, input))),
-               Work_vertex(std::size_t(target(next(h, input), input))));
+    w.add_face(to_work[std::size_t(source(h, input))], to_work[std::size_t(target(h, input))],
+               to_work[std::size_t(target(next(h, input), input))]);
   }
   return w;
 }

@@ -75,7 +75,8 @@ std::string quality_usage()
   }
   meshes += line;
   return "\n"
-         "usage: benchmark_remeshing --quality [--meshes LIST] [--seeds LIST] [--data DIR] [--json FILE]\n"
+         "usage: benchmark_remeshing --quality [--meshes LIST] [--seeds LIST] [--resampling] [--data DIR]\n"
+         "                                     [--json FILE]\n"
          "\n"
          "Compares the quality of graphcut_isotropic_remeshing (defaults, each seed) with that of CGAL's\n"
          "isotropic_remeshing (as above, run once a mesh): a row per mesh and seed with the vertex\n"
@@ -92,6 +93,8 @@ std::string quality_usage()
          meshes +
          ")\n"
          "  --seeds LIST            comma-separated random seeds of our remesher (default 0,1)\n"
+         "  --resampling            our remesher with graphcut_parameters::resampling(true) (default:\n"
+         "                          off, as the remesher's default)\n"
          "  --data DIR              as above\n"
          "  --json FILE             also write the rows as JSON (distances there are plain ratios\n"
          "                          to the diagonal, not x1e-3)\n";
@@ -644,7 +647,7 @@ int main(int argc, char** argv)
   bool skip_large = false, run_ours_method = true, run_cgal_method = true;
   std::string json_file;
   // The two modes take different mesh names, so --meshes is checked once the mode is known.
-  bool quality = false;
+  bool quality = false, resampling = false;
   std::optional<std::string> mesh_list, seed_list;
   std::vector<std::string> timing_only; // options of the timing mode given, refused with --quality
   for(int i = 1; i < argc; ++i)
@@ -666,6 +669,8 @@ int main(int argc, char** argv)
       quality = true;
     else if(arg == "--seeds")
       seed_list = value();
+    else if(arg == "--resampling")
+      resampling = true;
     else if(arg == "--repetitions" || arg == "--large-repetitions")
     {
       timing_only.push_back(arg);
@@ -717,10 +722,11 @@ int main(int argc, char** argv)
       options.meshes = split(*mesh_list);
     if(seed_list && !parse_seeds(*seed_list, options.seeds))
       fail("--seeds needs a comma-separated list of whole numbers below 2^32");
+    options.resampling = resampling;
     return run_quality_mode(options, json_file);
   }
-  if(seed_list)
-    fail("--seeds applies to --quality only");
+  if(seed_list || resampling)
+    fail(std::string(seed_list ? "--seeds" : "--resampling") + " applies to --quality only");
   if(mesh_list)
   {
     meshes = split(*mesh_list);

@@ -59,6 +59,8 @@ std::string usage()
       << ")\n"
          "  --no-connectivity       relocate vertices only, never change the connectivity (default:\n"
          "                          the connectivity is optimised)\n"
+      << "  --resampling            re-sample the surface to a curvature-adapted sizing field in the\n"
+      << "                          connectivity passes (default: " << (defaults.resampling ? "on" : "off") << ")\n"
          "  --quiet                 print nothing but errors, no progress bar (default: off)\n"
          "  --json FILE             write the quality figures, distances, time and energies as JSON\n"
          "                          (default: no JSON)\n"
@@ -177,6 +179,7 @@ int main(int argc, char** argv)
   std::optional<double> lambda_data, face_data_weight;
   std::optional<unsigned int> seed;
   bool quiet = false, connectivity = true;
+  bool resampling = GR::Remeshing_options().resampling;
   std::string json_file;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i)
@@ -203,6 +206,7 @@ int main(int argc, char** argv)
     else if(arg == "--face-data-weight") value(face_data_weight);
     else if(arg == "--seed") value(seed);
     else if(arg == "--no-connectivity") connectivity = false;
+    else if(arg == "--resampling") resampling = true;
     else if(arg == "--quiet") quiet = true;
     else if(arg == "--json")
     {
@@ -251,7 +255,7 @@ int main(int argc, char** argv)
       GP::number_of_greedy_iterations(greedy_iterations.value_or(defaults.number_of_greedy_iterations)),
       GP::lambda_data(lambda_data.value_or(defaults.weights.lambda_data)),
       GP::face_data_weight(face_data_weight.value_or(defaults.weights.face_data_weight)),
-      GP::do_connectivity_optimization(connectivity));
+      GP::do_connectivity_optimization(connectivity), GP::resampling(resampling));
     PMP::Graphcut_remeshing_statistics stats;
     if(!quiet && stderr_is_terminal())
     {

@@ -49,6 +49,7 @@ struct Quality_options
   std::string data_dir;
   std::vector<std::string> meshes = quality_default_meshes();
   std::vector<unsigned int> seeds = {0, 1};
+  bool resampling = false; // graphcut_parameters::resampling of our remesher
 };
 
 // The figures of one remeshed output.
@@ -249,7 +250,9 @@ void run_quality_comparison(const Quality_options& options, const CgalRemesh& re
       std::cerr << name << ": ours, seed " << seed << " ..." << std::flush;
       Mesh ours_output = input;
       const auto start = std::chrono::steady_clock::now();
-      PMP::graphcut_isotropic_remeshing(ours_output, CGAL::parameters::random_seed(seed));
+      PMP::graphcut_isotropic_remeshing(
+        ours_output, PMP::graphcut_parameters::combine(CGAL::parameters::random_seed(seed),
+                                                       PMP::graphcut_parameters::resampling(options.resampling)));
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       // Untimed, as for CGAL's output: whatever the remesher leaves removed is not counted.
       ours_output.collect_garbage();

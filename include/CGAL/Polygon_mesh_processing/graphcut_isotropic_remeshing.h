@@ -182,6 +182,13 @@ struct Default_visitor
  *     \cgalParamType{`std::size_t`}
  *     \cgalParamDefault{`5`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::resampling}
+ *     \cgalParamDescription{whether the connectivity passes re-sample the surface to a
+ *                           curvature-adapted sizing field (splits and collapses also where the
+ *                           surface is curved and along feature lines and borders)}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
  * \return the energies before and after each iteration, and counts
@@ -232,6 +239,7 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
     choose_parameter(get_parameter(np, GNP::connectivity_period), defaults.connectivity_period);
   options.sharp_angle_bounds =
     choose_parameter(get_parameter(np, GNP::sharp_angle_bounds), defaults.sharp_angle_bounds);
+  options.resampling = choose_parameter(get_parameter(np, GNP::resampling), defaults.resampling);
   auto visitor = choose_parameter(get_parameter(np, GNP::visitor), GR::Default_visitor());
 
   auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, tmesh));

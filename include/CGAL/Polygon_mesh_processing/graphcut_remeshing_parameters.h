@@ -28,6 +28,7 @@ enum cooling_factor_t { cooling_factor };
 enum smoothing_step_t { smoothing_step };
 enum visitor_t { visitor };
 enum do_connectivity_optimization_t { do_connectivity_optimization };
+enum resampling_t { resampling };
 } // namespace graphcut_internal_np
 /// \endcond
 
@@ -210,6 +211,19 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(visitor)
  * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
  */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(do_connectivity_optimization)
+/*!
+ * sets `resampling`, beyond the paper: whether the connectivity passes re-sample the surface to a
+ * sizing field, as `isotropic_remeshing()` does: edges longer than 4/3 of their target length are
+ * split and shorter than 4/5 collapsed, also where the surface is curved and along feature lines
+ * and borders, as long as the new triangles stay near the input. The target lengths follow the
+ * input's curvature, between half and twice its mean edge length, for about as many triangles as
+ * the mean length would make.
+ *
+ * \tparam T `bool`
+ * \param value whether to re-sample
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
+CGAL_GRAPHCUT_REMESHING_PARAMETER(resampling)
 
 #undef CGAL_GRAPHCUT_REMESHING_PARAMETER
 

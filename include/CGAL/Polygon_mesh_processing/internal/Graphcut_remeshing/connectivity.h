@@ -5,7 +5,8 @@
 // splits), each kept only when it improves its own criterion, and the relaxation of the vertex
 // positions. Sharp, border and constrained edges are never flipped or collapsed and no collapse
 // or relaxation touches a vertex on one; a long sharp edge may be split at a point of its
-// reference polyline.
+// reference polyline. With a re-sampling sizing (`resampling`), edges are split and collapsed to
+// their target lengths first, also where the surface is curved and along feature lines.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_CONNECTIVITY_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_CONNECTIVITY_H
@@ -21,6 +22,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
 
 #include <boost/container/small_vector.hpp>
 
@@ -113,13 +115,24 @@ public:
     fit_arrays();
   }
 
-  // One pass of section 3: flips, splits, collapses, vertex splits, then relaxation.
+  // One pass of section 3: flips, splits, collapses, vertex splits, then relaxation. When the
+  // sizing re-samples the surface, the splits and collapses bring every edge within 4/5 and 4/3 of
+  // its target first, as CGAL's incremental remesher does, and the flips follow.
   Connectivity_counts run()
   {
     Connectivity_counts counts;
-    counts.flips = flip_edges();
-    counts.splits = split_edges();
-    counts.collapses = collapse_edges();
+    if(m_sizing.resamples())
+    {
+      counts.splits = split_edges();
+      counts.collapses = collapse_edges();
+      counts.flips = flip_edges();
+    }
+    else
+    {
+      counts.flips = flip_edges();
+      counts.splits = split_edges();
+      counts.collapses = collapse_edges();
+    }
     counts.vertex_splits = split_vertices();
     counts.relaxed = relax();
     return counts;
@@ -194,13 +207,16 @@ public:
   double split_gain(Edge e, Vector_3d& new_point, Location& on_feature) const
   {
     const char feature = m_state.feature_edge[std::size_t(e)];
-    if(m_mesh.is_border(e) || feature == Tracking_state::constrained_edge || (feature && !m_polylines))
+    // Border edges are re-sampled only with the re-sampling sizing.
+    if((m_mesh.is_border(e) && !m_sizing.resamples()) || feature == Tracking_state::constrained_edge ||
+       (feature && !m_polylines))
       return 0;
-    const Halfedge h = m_mesh.halfedge(e), o = m_mesh.opposite(h);
+    const Halfedge h = face_side(e), o = m_mesh.opposite(h);
+    const bool two_faces = !m_mesh.is_border(o);
     const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
     if(is_frozen(a) || is_frozen(b))
       return 0;
-    const Vertex c = m_mesh.target(m_mesh.next(h)), d = m_mesh.target(m_mesh.next(o));
+    const Vertex c = m_mesh.target(m_mesh.next(h)), d = two_faces ? m_mesh.target(m_mesh.next(o)) : c;
     const Vector_3d pa = position(a), pb = position(b), pc = position(c), pd = position(d);
     const double length = (pa - pb).norm();
     if(!(length > 4.0 / 3.0 * edge_length_target(a, b)))
@@ -218,9 +234,27 @@ public:
       new_point = project((pa + pb) / 2, a);
     const Vector_3d& p = new_point;
     const Vector_3d abc = area_vector(pa, pb, pc), bad = area_vector(pb, pa, pd);
-    if(!acceptable(pa, p, pc, a, abc) || !acceptable(p, pb, pc, b, abc) || !acceptable(pb, p, pd, b, bad) ||
-       !acceptable(p, pa, pd, a, bad))
+    if(!acceptable(pa, p, pc, a, abc) || !acceptable(p, pb, pc, b, abc) ||
+       (two_faces && (!acceptable(pb, p, pd, b, bad) || !acceptable(p, pa, pd, a, bad))))
       return 0;
+    if(m_sizing.resamples())
+    {
+      // Re-sampling: the longest edges first, relative to their target. The surface may bend
+      // the midpoint far from the chord (next to a crease it lands on the crease, and splitting
+      // would never shorten the edge), and the new triangles may not be much thinner than the
+      // ones they cut.
+      if(!feature && !((p - (pa + pb) / 2).norm() <= length / 4))
+        return 0;
+      double old_min = smallest_angle(pa, pb, pc), new_min = (std::min)(smallest_angle(pa, p, pc), smallest_angle(p, pb, pc));
+      if(two_faces)
+      {
+        old_min = (std::min)(old_min, smallest_angle(pb, pa, pd));
+        new_min = (std::min)({new_min, smallest_angle(pb, p, pd), smallest_angle(p, pa, pd)});
+      }
+      if(!(new_min >= 0.5 * old_min))
+        return 0;
+      return length / edge_length_target(a, b) - 4.0 / 3.0;
+    }
     const double old_q = (std::min)(split_quality(pa, pb, pc), split_quality(pb, pa, pd));
     const double new_q = (std::min)({split_quality(pa, p, pc), split_quality(p, pb, pc),
                                      split_quality(pb, p, pd), split_quality(p, pa, pd)});
@@ -239,16 +273,18 @@ public:
                 return split_gain(e, q, l);
               },
               [&](Edge e) {
-                const Halfedge h = m_mesh.halfedge(e);
+                const Halfedge h = face_side(e);
                 const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
                 const char feature = m_state.feature_edge[std::size_t(e)];
-                // The new halfedge points from a to the new vertex; then cut both faces.
+                // The new halfedge points from a to the new vertex; then cut the faces (one on a
+                // border).
                 const Halfedge hn = CGAL::Euler::split_edge(h, m_mesh);
                 const Vertex v = m_mesh.target(hn);
                 m_mesh.point(v) = Work_kernel::Point_3(p.x(), p.y(), p.z());
                 CGAL::Euler::split_face(hn, m_mesh.next(m_mesh.next(hn)), m_mesh);
                 const Halfedge on = m_mesh.opposite(hn);
-                CGAL::Euler::split_face(m_mesh.prev(on), m_mesh.next(on), m_mesh);
+                if(!m_mesh.is_border(on))
+                  CGAL::Euler::split_face(m_mesh.prev(on), m_mesh.next(on), m_mesh);
                 fit_arrays();
                 for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
                   m_state.feature_edge[std::size_t(m_mesh.edge(g))] = 0;
@@ -335,6 +371,8 @@ public:
 
   std::size_t collapse_edges()
   {
+    if(m_sizing.resamples())
+      return resampling_collapses();
     std::size_t done = 0;
     Vector_3d p;
     run_queue([&](Edge e) { return collapse_gain(e, p); },
@@ -352,6 +390,172 @@ public:
                   touched.push_back(m_mesh.source(g));
                   m_state.face_hint[std::size_t(m_mesh.face(g))] = m_state.vertex_hint[std::size_t(v)];
                 }
+                ++done;
+                return touched;
+              });
+    return done;
+  }
+
+  // --- re-sampling collapses: edges shorter than 4/5 of their target, also where the surface is
+  // curved and along feature lines, as long as the new triangles stay near the reference ---
+
+  struct Collapse
+  {
+    Vertex removed, kept;
+    Vector_3d point; // where the kept vertex goes
+  };
+
+  // How many feature edges v has, and the far end of one that is not e.
+  std::size_t feature_degree(Vertex v, Edge e, Vertex& other) const
+  {
+    std::size_t n = 0;
+    for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      if(m_state.feature_edge[std::size_t(m_mesh.edge(g))])
+      {
+        ++n;
+        if(m_mesh.edge(g) != e)
+          other = m_mesh.source(g);
+      }
+    return n;
+  }
+
+  // A feature edge shortens its line by removing an end that slides on it, where the line runs
+  // on: the end has no other feature edge than the next one along, the line turns there by less
+  // than the sharp-edge bound, and the shortened line keeps within the tolerance of it.
+  bool feature_collapse_ends(Edge e, Collapse& c) const
+  {
+    static const double min_cosine = std::cos(35 * pi / 180);
+    const Halfedge h = m_mesh.halfedge(e);
+    double best = min_cosine;
+    bool found = false;
+    for(const auto& ends : {std::make_pair(m_mesh.source(h), m_mesh.target(h)),
+                            std::make_pair(m_mesh.target(h), m_mesh.source(h))})
+    {
+      const Vertex r = ends.first, k = ends.second;
+      Vertex x;
+      if(m_state.kind[std::size_t(r)] != Vertex_kind::feature_vertex || feature_degree(r, e, x) != 2 || x == k)
+        continue;
+      const Vector_3d pr = position(r), pk = position(k), px = position(x);
+      const double turn = (pr - pk).normalized().dot((px - pr).normalized());
+      if(!(turn > best) || distance_to_segment(pr, pk, px) > m_sizing.tolerance ||
+         (pk - px).norm() > 4.0 / 3.0 * edge_length_target(k, x))
+        continue;
+      best = turn;
+      found = true;
+      c = Collapse{r, k, pk};
+    }
+    return found;
+  }
+
+  // The smallest angle of the triangles around c.removed and c.kept that stay, with both at
+  // c.point, or -1 when one of them is not acceptable, leaves the reference by more than the
+  // tolerance or has an edge longer than 4/3 of its target (a split would undo the collapse).
+  double collapsed_smallest_angle(const Collapse& c) const
+  {
+    double smallest = pi;
+    for(Vertex u : {c.removed, c.kept})
+      for(Halfedge g : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+      {
+        if(m_mesh.is_border(g))
+          continue;
+        const Vertex p = m_mesh.source(g), q = m_mesh.target(m_mesh.next(g));
+        if(p == c.removed || p == c.kept || q == c.removed || q == c.kept)
+          continue; // one of the triangles that disappear
+        const Vector_3d pp = position(p), pq = position(q);
+        if(!acceptable(c.point, pq, pp, u, area_vector(position(u), pq, pp)) ||
+           distance_to_reference((c.point + pp + pq) / 3, c.kept) > m_sizing.tolerance ||
+           (c.point - pp).norm() > 4.0 / 3.0 * edge_length_target(c.kept, p))
+          return -1;
+        smallest = (std::min)(smallest, smallest_angle(c.point, pq, pp));
+      }
+    return smallest;
+  }
+
+  double resampling_collapse_gain(Edge e, Collapse& c) const
+  {
+    const char feature = m_state.feature_edge[std::size_t(e)];
+    const Halfedge h = m_mesh.halfedge(e);
+    const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
+    if(feature == Tracking_state::constrained_edge || is_frozen(a) || is_frozen(b))
+      return 0;
+    const Vector_3d pa = position(a), pb = position(b);
+    const double length = (pa - pb).norm(), target = edge_length_target(a, b);
+    if(!(length < 4.0 / 5.0 * target))
+      return 0;
+    if(feature ? !(m_polylines && feature_collapse_ends(e, c)) : !(is_free(a) && is_free(b)))
+      return 0;
+    // The triangles on e go; their far vertices keep three edges, and no feature edge merges.
+    double old_min = pi;
+    for(Halfedge g : {h, m_mesh.opposite(h)})
+      if(!m_mesh.is_border(g))
+      {
+        if(m_mesh.degree(m_mesh.target(m_mesh.next(g))) < 4 || m_state.feature_edge[std::size_t(m_mesh.edge(m_mesh.next(g)))] ||
+           m_state.feature_edge[std::size_t(m_mesh.edge(m_mesh.prev(g)))])
+          return 0;
+      }
+    if(!CGAL::Euler::does_satisfy_link_condition(e, m_mesh))
+      return 0;
+    for(Vertex u : {a, b})
+      for(Halfedge g : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+        if(!m_mesh.is_border(g))
+          old_min = (std::min)(old_min, smallest_angle(position(u), position(m_mesh.target(m_mesh.next(g))),
+                                                       position(m_mesh.source(g))));
+    // A free edge becomes its end or its midpoint on the reference, whichever keeps the best
+    // triangles; the new ones may be thinner than the old by half at most.
+    double best = -1;
+    Collapse chosen = c;
+    const std::array<Vector_3d, 3> places{{pb, pa, project((pa + pb) / 2, a)}};
+    for(std::size_t k = 0; k < (feature ? 1 : places.size()); ++k)
+    {
+      Collapse trial = feature ? c : Collapse{a, b, places[k]};
+      const double smallest = collapsed_smallest_angle(trial);
+      if(smallest > best)
+      {
+        best = smallest;
+        chosen = trial;
+      }
+    }
+    if(!(best >= 0.5 * old_min))
+      return 0;
+    c = chosen;
+    return 1 - length / (4.0 / 5.0 * target);
+  }
+
+  // Collapses e as c says: c.kept keeps its index (a corner or a user's vertex is found by it).
+  Vertex collapse(Edge e, const Collapse& c)
+  {
+    if(m_mesh.target(m_mesh.halfedge(e)) != c.kept)
+    {
+      // collapse_edge keeps the target of e's halfedge: the two vertices trade their
+      // connectivity first (not their points nor their state), which makes c.kept that target.
+      Vertex kept = c.kept, removed = c.removed;
+      CGAL::internal::swap_vertices(kept, removed, m_mesh);
+    }
+    const Vertex v = CGAL::Euler::collapse_edge(e, m_mesh);
+    CGAL_assertion(v == c.kept);
+    m_mesh.point(v) = Work_kernel::Point_3(c.point.x(), c.point.y(), c.point.z());
+    if(is_free(v))
+      bind_new_vertex(v, v);
+    for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      if(!m_mesh.is_border(g))
+        m_state.face_hint[std::size_t(m_mesh.face(g))] = m_state.vertex_hint[std::size_t(v)];
+    return v;
+  }
+
+  std::size_t resampling_collapses()
+  {
+    std::size_t done = 0;
+    Collapse c;
+    run_queue([&](Edge e) { return resampling_collapse_gain(e, c); },
+              [&](Edge e) {
+                Collapse d;
+                return resampling_collapse_gain(e, d);
+              },
+              [&](Edge e) {
+                const Vertex v = collapse(e, c);
+                std::vector<Vertex> touched{v};
+                for(Vertex w : vertices_around_target(m_mesh.halfedge(v), m_mesh))
+                  touched.push_back(w);
                 ++done;
                 return touched;
               });
@@ -616,6 +820,13 @@ private:
   }
   bool is_frozen(Vertex v) const { return m_state.frozen[std::size_t(v)] != 0; }
 
+  // The halfedge of e on a face (e's own halfedge unless that one is on the border).
+  Halfedge face_side(Edge e) const
+  {
+    const Halfedge h = m_mesh.halfedge(e);
+    return m_mesh.is_border(h) ? m_mesh.opposite(h) : h;
+  }
+
   bool flippable(Edge e) const
   {
     if(m_state.feature_edge[std::size_t(e)] || m_mesh.is_border(e))
@@ -674,6 +885,9 @@ private:
 
   double edge_length_target(Vertex a, Vertex b) const
   {
+    if(m_sizing.resamples())
+      return (std::min)(m_sizing.length(m_state.closest[std::size_t(a)]),
+                        m_sizing.length(m_state.closest[std::size_t(b)]));
     return (std::min)(m_sizing.length(m_reference.frame(m_state.closest[std::size_t(a)])),
                       m_sizing.length(m_reference.frame(m_state.closest[std::size_t(b)])));
   }
@@ -760,7 +974,7 @@ private:
   Work_mesh& m_mesh;
   const Reference_surface<Work_mesh>& m_reference;
   Tracking_state& m_state;
-  Sizing m_sizing;
+  const Sizing& m_sizing;
   const Feature_polylines<Work_mesh>* m_polylines;
   Local_energy m_local_energy;
 };

@@ -73,6 +73,10 @@ struct Remeshing_options
   // reference; it shortens the target length where the surface is curved (section 3.1's e_min,
   // e_max depend on the local curvature).
   double sizing_tolerance = 3e-3;
+  // Beyond the paper: the connectivity stage re-samples the surface to a curvature-adapted sizing
+  // field (sizing.h's curvature_sizing()), collapsing and splitting also where it is curved and
+  // along feature lines and borders.
+  bool resampling = false;
 };
 
 class Graphcut_remesher
@@ -105,8 +109,13 @@ public:
       for(Face f : {p.first, p.second})
         for(Vertex u : face_vertices(m_mesh, f))
           m_intersection_frozen[std::size_t(u)] = 1;
-    m_sizing.mean_length = mean_edge_length(m_mesh);
-    m_sizing.tolerance = m_options.sizing_tolerance;
+    if(m_options.resampling)
+      m_sizing = curvature_sizing(m_reference_mesh, m_reference_feature_edge, mean_edge_length(m_mesh));
+    else
+    {
+      m_sizing.mean_length = mean_edge_length(m_mesh);
+      m_sizing.tolerance = m_options.sizing_tolerance;
+    }
     m_energy.compute_terms();
   }
 

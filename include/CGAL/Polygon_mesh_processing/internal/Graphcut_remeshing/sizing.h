@@ -7,11 +7,19 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_SIZING_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_SIZING_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -20,11 +28,15 @@ namespace Graphcut_remeshing {
 
 // The target edge length at a point of the reference: the mean edge length of the input, shorter
 // where the surface is curved so that a chord of that length stays within `tolerance` of it
-// (l = sqrt(6 tolerance rho - 3 tolerance^2)), never below half the mean.
+// (l = sqrt(6 tolerance rho - 3 tolerance^2)), never below half the mean. With `target` (by
+// reference vertex, see curvature_sizing()) the connectivity stage re-samples the surface to it.
 struct Sizing
 {
   double mean_length = 0;
   double tolerance = 1e-3;
+  std::vector<double> target; // by reference vertex; empty: the length comes from the frames
+
+  bool resamples() const { return !target.empty(); }
 
   double length(const Local_frame& f) const
   {
@@ -35,6 +47,8 @@ struct Sizing
     const double curved = l2 > 0 ? std::sqrt(l2) : 0;
     return (std::max)(0.5 * mean_length, (std::min)(mean_length, curved));
   }
+
+  double length(Work_mesh::Vertex_index reference_vertex) const { return target[std::size_t(reference_vertex)]; }
 };
 
 // The mean length of the edges of m (0 without edges).
@@ -44,6 +58,126 @@ inline double mean_edge_length(const Work_mesh& m)
   for(Work_mesh::Edge_index e : m.edges())
     total += (to_vector(m.point(m.source(m.halfedge(e)))) - to_vector(m.point(m.target(m.halfedge(e))))).norm();
   return m.number_of_edges() > 0 ? total / double(m.number_of_edges()) : 0;
+}
+
+// The radius of curvature a vertex of the reference shows across its smooth edges: for an edge of
+// dihedral angle theta (below `smooth_dihedral` degrees, not a feature) between triangles of
+// heights h1 and h2 over it, the circle through the two triangles' far sides has radius about
+// (h1 + h2) / (2 theta); a vertex takes the smallest over its edges (infinite when flat). Unlike
+// a jet fit, it sees neither the noise of a coarse sampling nor the creases next to the vertex.
+inline std::vector<double> smooth_edge_radii(const Work_mesh& m, const std::vector<char>& feature_edge,
+                                             double smooth_dihedral)
+{
+  std::vector<double> radius(m.num_vertices(), std::numeric_limits<double>::infinity());
+  for(Work_mesh::Edge_index e : m.edges())
+  {
+    const Work_mesh::Halfedge_index h = m.halfedge(e), o = m.opposite(h);
+    if(feature_edge[std::size_t(e)] || m.is_border(e))
+      continue;
+    const double theta = dihedral_angle(m, e) * pi / 180;
+    if(!(theta > 0) || theta >= smooth_dihedral * pi / 180)
+      continue;
+    const Vector_3d a = to_vector(m.point(m.source(h))), b = to_vector(m.point(m.target(h)));
+    const double h1 = distance_to_segment(to_vector(m.point(m.target(m.next(h)))), a, b);
+    const double h2 = distance_to_segment(to_vector(m.point(m.target(m.next(o)))), a, b);
+    const double r = (h1 + h2) / (2 * theta);
+    for(Work_mesh::Vertex_index v : {m.source(h), m.target(h)})
+      radius[std::size_t(v)] = (std::min)(radius[std::size_t(v)], r);
+  }
+  return radius;
+}
+
+// A third of the area of the triangles around each vertex: the part of the surface it samples.
+inline std::vector<double> vertex_areas(const Work_mesh& m)
+{
+  std::vector<double> area(m.num_vertices(), 0);
+  for(Work_mesh::Face_index f : m.faces())
+  {
+    const Work_mesh::Halfedge_index h = m.halfedge(f);
+    const Work_mesh::Vertex_index u = m.source(h), v = m.target(h), w = m.target(m.next(h));
+    const double third =
+      area_vector(to_vector(m.point(u)), to_vector(m.point(v)), to_vector(m.point(w))).norm() / 6;
+    for(Work_mesh::Vertex_index x : {u, v, w})
+      area[std::size_t(x)] += third;
+  }
+  return area;
+}
+
+// Lowers the target lengths so that they grow by at most `gradation` times the distance along
+// the edges (a Dijkstra from the shortest): neighbouring triangles then differ little in size.
+inline void grade_sizing(const Work_mesh& m, double gradation, std::vector<double>& length)
+{
+  using Entry = std::pair<double, std::size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > queue;
+  for(Work_mesh::Vertex_index v : m.vertices())
+    queue.emplace(length[std::size_t(v)], std::size_t(v));
+  while(!queue.empty())
+  {
+    const Entry top = queue.top();
+    queue.pop();
+    if(top.first > length[top.second])
+      continue;
+    const Work_mesh::Vertex_index v(static_cast<Work_mesh::size_type>(top.second));
+    for(Work_mesh::Vertex_index w : vertices_around_target(m.halfedge(v), m))
+    {
+      const double through = top.first + gradation * (to_vector(m.point(v)) - to_vector(m.point(w))).norm();
+      if(through < length[std::size_t(w)])
+      {
+        length[std::size_t(w)] = through;
+        queue.emplace(through, std::size_t(w));
+      }
+    }
+  }
+}
+
+// The sizing field of the re-sampling connectivity stage on the reference `m`: at each vertex the
+// chord length that keeps within a tolerance of the curvature radius, between half and twice the
+// mean length, graded; the tolerance is chosen so that the field asks for as many triangles as the
+// mean length would everywhere (sum of area / l^2), so that the vertex count stays the input's
+// while the curved parts get the short edges and the flat parts the long ones.
+inline Sizing curvature_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double mean_length)
+{
+  static constexpr double smooth_dihedral = 35; // the sharp edges' upper bound, as eq. (8)'s default
+  static constexpr double gradation = 0.5;
+  const std::vector<double> radius = smooth_edge_radii(m, feature_edge, smooth_dihedral);
+  const std::vector<double> area = vertex_areas(m);
+  double budget = 0;
+  for(Work_mesh::Vertex_index v : m.vertices())
+    budget += area[std::size_t(v)] / (mean_length * mean_length);
+  Sizing sizing;
+  sizing.mean_length = mean_length;
+  sizing.target.assign(m.num_vertices(), mean_length);
+  auto fill = [&](double tolerance) {
+    double count = 0;
+    for(Work_mesh::Vertex_index v : m.vertices())
+    {
+      const double l = std::sqrt(6 * tolerance * radius[std::size_t(v)]); // +inf when flat
+      double& t = sizing.target[std::size_t(v)];
+      t = (std::max)(0.5 * mean_length, (std::min)(2 * mean_length, l));
+      count += area[std::size_t(v)] / (t * t);
+    }
+    return count;
+  };
+  // The count falls as the tolerance grows: bisection on its logarithm.
+  double low = std::log(1e-9 * mean_length), high = std::log(mean_length);
+  for(int k = 0; k < 60; ++k)
+  {
+    const double mid = (low + high) / 2;
+    (fill(std::exp(mid)) > budget ? low : high) = mid;
+  }
+  // The tolerance also bounds how far the collapses' triangles and shortened feature lines may
+  // leave the input.
+  sizing.tolerance = std::exp(high);
+  fill(sizing.tolerance);
+  grade_sizing(m, gradation, sizing.target);
+  // Grading only shortens: scale the field back to the budget.
+  double count = 0;
+  for(Work_mesh::Vertex_index v : m.vertices())
+    count += area[std::size_t(v)] / (sizing.target[std::size_t(v)] * sizing.target[std::size_t(v)]);
+  const double stretch = budget > 0 && count > 0 ? std::sqrt(count / budget) : 1;
+  for(double& t : sizing.target)
+    t *= stretch;
+  return sizing;
 }
 
 } // namespace Graphcut_remeshing
