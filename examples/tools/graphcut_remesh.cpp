@@ -59,6 +59,8 @@ std::string usage()
       << ")\n"
          "  --no-connectivity       relocate vertices only, never change the connectivity (default:\n"
          "                          the connectivity is optimised)\n"
+      << "  --sharp-angle LOW HIGH  the dihedral angles (degrees) of the sharp-edge hysteresis (default "
+      << defaults.sharp_angle_bounds.first << " " << defaults.sharp_angle_bounds.second << ")\n"
       << "  --resampling            re-sample the surface to a curvature-adapted sizing field in the\n"
       << "                          connectivity passes (default: " << (defaults.resampling ? "on" : "off") << ")\n"
          "  --quiet                 print nothing but errors, no progress bar (default: off)\n"
@@ -180,6 +182,7 @@ int main(int argc, char** argv)
   std::optional<unsigned int> seed;
   bool quiet = false, connectivity = true;
   bool resampling = GR::Remeshing_options().resampling;
+  std::optional<double> sharp_low, sharp_high;
   std::string json_file;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i)
@@ -207,6 +210,16 @@ int main(int argc, char** argv)
     else if(arg == "--seed") value(seed);
     else if(arg == "--no-connectivity") connectivity = false;
     else if(arg == "--resampling") resampling = true;
+    else if(arg == "--sharp-angle")
+    {
+      value(sharp_low);
+      value(sharp_high);
+      if(!(*sharp_low <= *sharp_high) || *sharp_high > 180)
+      {
+        std::cerr << "graphcut_remesh: --sharp-angle needs LOW <= HIGH <= 180\n";
+        return EXIT_FAILURE;
+      }
+    }
     else if(arg == "--quiet") quiet = true;
     else if(arg == "--json")
     {
@@ -255,7 +268,9 @@ int main(int argc, char** argv)
       GP::number_of_greedy_iterations(greedy_iterations.value_or(defaults.number_of_greedy_iterations)),
       GP::lambda_data(lambda_data.value_or(defaults.weights.lambda_data)),
       GP::face_data_weight(face_data_weight.value_or(defaults.weights.face_data_weight)),
-      GP::do_connectivity_optimization(connectivity), GP::resampling(resampling));
+      GP::do_connectivity_optimization(connectivity), GP::resampling(resampling),
+      GP::sharp_angle_bounds(std::make_pair(sharp_low.value_or(defaults.sharp_angle_bounds.first),
+                                            sharp_high.value_or(defaults.sharp_angle_bounds.second))));
     PMP::Graphcut_remeshing_statistics stats;
     if(!quiet && stderr_is_terminal())
     {

@@ -75,7 +75,7 @@ with tempfile.TemporaryDirectory() as tmp:
     r = run(['--help'])
     check(r.returncode == 0 and r.stderr == '', "--help exit code %d, stderr %r" % (r.returncode, r.stderr))
     for option in ('--seed', '--json', '--iterations', '--greedy-iterations', '--lambda-data',
-                   '--face-data-weight', '--no-connectivity', '--quiet', '--help'):
+                   '--face-data-weight', '--no-connectivity', '--resampling', '--sharp-angle', '--quiet', '--help'):
         check(option in r.stdout, "--help does not document %s" % option)
     for fmt in ('OFF', 'OBJ', 'PLY', 'STL'):
         check(fmt in r.stdout, "--help does not name the %s format" % fmt)
@@ -91,7 +91,8 @@ with tempfile.TemporaryDirectory() as tmp:
     for name, text in help_options.items():
         check('default' in text, "--help gives no default for %s: %r" % (name, text))
     for name, default in (('--seed', 'default 0'), ('--iterations', 'default 150'),
-                          ('--greedy-iterations', 'default 20'), ('--json', 'default: no JSON')):
+                          ('--greedy-iterations', 'default 20'), ('--json', 'default: no JSON'),
+                          ('--sharp-angle', 'default 20 35'), ('--resampling', 'default: off')):
         check(default in help_options.get(name, ''), "--help: %s should say %r" % (name, default))
 
     # Refusals: exit code 1, no output file.
@@ -105,6 +106,10 @@ with tempfile.TemporaryDirectory() as tmp:
           "missing OUTPUT after options: %d %r" % (r.returncode, r.stderr))
     r = run([])
     check(r.returncode == 1 and 'usage: graphcut_remesh' in r.stderr, "no arguments: %d" % r.returncode)
+    # Hysteresis bounds in the wrong order are refused.
+    r = run([mesh, missing_out, '--sharp-angle', '40', '30'] + short)
+    check(r.returncode == 1 and 'LOW <= HIGH' in r.stderr and not os.path.exists(missing_out),
+          "--sharp-angle 40 30: %d %r" % (r.returncode, r.stderr))
     # An output format that cannot be written is refused before the work, with one line.
     unwritable = os.path.join(tmp, 'never.xyz')
     r = run([mesh, unwritable] + short)
