@@ -349,12 +349,16 @@ void expect_resampling_guarantees(const Pass_setup& s, const Work& before, doubl
   };
   for(auto e : s.reference_mesh.edges())
     if(s.reference_feature_edge[std::size_t(e)])
+    {
       EXPECT_LT(distance_to_feature_edges(midpoint(s.reference_mesh, e), m, s.state.feature_edge), near)
         << name << ": an input feature edge is lost";
+    }
   for(auto e : m.edges())
     if(s.state.feature_edge[std::size_t(e)])
+    {
       EXPECT_LT(distance_to_feature_edges(midpoint(m, e), s.reference_mesh, s.reference_feature_edge), near)
-        << name << ": a feature edge where the input has none ";
+        << name << ": a feature edge where the input has none";
+    }
 }
 
 } // namespace
@@ -371,7 +375,7 @@ TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)
   for(const Work* m : {&bent, &sphere})
   {
     const double mean = GR::mean_edge_length(*m);
-    const GR::Sizing sizing = GR::curvature_sizing(*m, Pass_setup::features_of(*m, true), mean);
+    const GR::Sizing sizing = GR::curvature_sizing(*m, Pass_setup::features_of(*m, true), mean, 35);
     ASSERT_TRUE(sizing.resamples());
     const std::vector<double> area = GR::vertex_areas(*m);
     double budget = 0, spent = 0;
@@ -384,10 +388,12 @@ TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)
     }
     EXPECT_NEAR(spent, budget, 1e-6 * budget);
     if(m == &sphere)
+    {
       for(auto v : m->vertices())
         EXPECT_NEAR(sizing.length(v), mean, 0.1 * mean);
+    }
   }
-  const GR::Sizing sizing = GR::curvature_sizing(bent, Pass_setup::features_of(bent, true), GR::mean_edge_length(bent));
+  const GR::Sizing sizing = GR::curvature_sizing(bent, Pass_setup::features_of(bent, true), GR::mean_edge_length(bent), 35);
   double flat = 0, curved = 0;
   for(auto v : bent.vertices())
   {
@@ -409,7 +415,7 @@ TEST(Connectivity_pass, ResamplingBringsTheEdgesToTheirTargets)
     {
       Pass_setup s(input.mesh);
       const double mean = GR::mean_edge_length(s.reference_mesh);
-      s.sizing = GR::curvature_sizing(s.reference_mesh, s.reference_feature_edge, factor * mean);
+      s.sizing = GR::curvature_sizing(s.reference_mesh, s.reference_feature_edge, factor * mean, 35);
       const std::string name = input.name + " x" + std::to_string(factor);
       for(int pass = 0; pass < 4; ++pass)
       {

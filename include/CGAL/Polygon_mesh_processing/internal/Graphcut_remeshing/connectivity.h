@@ -335,13 +335,7 @@ public:
       return 0;
     // The triangles that stay, around a and b, before and after; the merged vertex goes to a, b
     // or the midpoint brought onto the reference, whichever gives the largest smallest angle.
-    double old_min = pi;
-    for(Vertex u : {a, b})
-      for(Halfedge g : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
-      {
-        const Vertex p = m_mesh.source(g), q = m_mesh.target(m_mesh.next(g));
-        old_min = (std::min)(old_min, smallest_angle(position(u), position(q), position(p)));
-      }
+    const double old_min = smallest_angle_around(a, b);
     double best = -1;
     for(const Vector_3d& x : {pa, pb, project((pa + pb) / 2, a)})
     {
@@ -421,10 +415,10 @@ public:
 
   // A feature edge shortens its line by removing an end that slides on it, where the line runs
   // on: the end has no other feature edge than the next one along, the line turns there by less
-  // than the sharp-edge bound, and the shortened line keeps within the tolerance of it.
+  // than the corner angle, and the shortened line keeps within the tolerance of it.
   bool feature_collapse_ends(Edge e, Collapse& c) const
   {
-    static const double min_cosine = std::cos(35 * pi / 180);
+    const double min_cosine = std::cos(m_sizing.corner_angle * pi / 180);
     const Halfedge h = m_mesh.halfedge(e);
     double best = min_cosine;
     bool found = false;
@@ -445,6 +439,18 @@ public:
       c = Collapse{r, k, pk};
     }
     return found;
+  }
+
+  // The smallest angle of the triangles around a and b.
+  double smallest_angle_around(Vertex a, Vertex b) const
+  {
+    double smallest = pi;
+    for(Vertex u : {a, b})
+      for(Halfedge g : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+        if(!m_mesh.is_border(g))
+          smallest = (std::min)(smallest, smallest_angle(position(u), position(m_mesh.target(m_mesh.next(g))),
+                                                         position(m_mesh.source(g))));
+    return smallest;
   }
 
   // The smallest angle of the triangles around c.removed and c.kept that stay, with both at
@@ -485,7 +491,6 @@ public:
     if(feature ? !(m_polylines && feature_collapse_ends(e, c)) : !(is_free(a) && is_free(b)))
       return 0;
     // The triangles on e go; their far vertices keep three edges, and no feature edge merges.
-    double old_min = pi;
     for(Halfedge g : {h, m_mesh.opposite(h)})
       if(!m_mesh.is_border(g))
       {
@@ -495,11 +500,7 @@ public:
       }
     if(!CGAL::Euler::does_satisfy_link_condition(e, m_mesh))
       return 0;
-    for(Vertex u : {a, b})
-      for(Halfedge g : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
-        if(!m_mesh.is_border(g))
-          old_min = (std::min)(old_min, smallest_angle(position(u), position(m_mesh.target(m_mesh.next(g))),
-                                                       position(m_mesh.source(g))));
+    const double old_min = smallest_angle_around(a, b);
     // A free edge becomes its end or its midpoint on the reference, whichever keeps the best
     // triangles; the new ones may be thinner than the old by half at most.
     double best = -1;

@@ -33,7 +33,12 @@ namespace Graphcut_remeshing {
 struct Sizing
 {
   double mean_length = 0;
+  // How far a chord of the target length may leave the surface: the user's sizing tolerance, or,
+  // with a curvature_sizing() field, the one that field was solved for.
   double tolerance = 1e-3;
+  // The angle in degrees beyond which a dihedral is a crease rather than curvature, and a turn of
+  // a feature line a corner that re-sampling keeps: the sharp edges' upper bound (eq. 8).
+  double corner_angle = 35;
   std::vector<double> target; // by reference vertex; empty: the length comes from the frames
 
   bool resamples() const { return !target.empty(); }
@@ -135,17 +140,18 @@ inline void grade_sizing(const Work_mesh& m, double gradation, std::vector<doubl
 // mean length, graded; the tolerance is chosen so that the field asks for as many triangles as the
 // mean length would everywhere (sum of area / l^2), so that the vertex count stays the input's
 // while the curved parts get the short edges and the flat parts the long ones.
-inline Sizing curvature_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double mean_length)
+inline Sizing curvature_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double mean_length,
+                               double corner_angle)
 {
-  static constexpr double smooth_dihedral = 35; // the sharp edges' upper bound, as eq. (8)'s default
   static constexpr double gradation = 0.5;
-  const std::vector<double> radius = smooth_edge_radii(m, feature_edge, smooth_dihedral);
+  const std::vector<double> radius = smooth_edge_radii(m, feature_edge, corner_angle);
   const std::vector<double> area = vertex_areas(m);
   double budget = 0;
   for(Work_mesh::Vertex_index v : m.vertices())
     budget += area[std::size_t(v)] / (mean_length * mean_length);
   Sizing sizing;
   sizing.mean_length = mean_length;
+  sizing.corner_angle = corner_angle;
   sizing.target.assign(m.num_vertices(), mean_length);
   auto fill = [&](double tolerance) {
     double count = 0;
