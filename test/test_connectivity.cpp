@@ -133,25 +133,41 @@ public:
     return s;
   }
 
-  // The reference triangle nearest to x, by brute force: an oracle for the fold-over check.
-  GR::Vector_3d reference_normal(const GR::Vector_3d& x) const
+  // The reference triangle nearest to x, by brute force, and its distance: an oracle.
+  Work::Face_index nearest_reference_face(const GR::Vector_3d& x, double& distance) const
   {
-    double best = std::numeric_limits<double>::infinity();
-    GR::Vector_3d normal = GR::Vector_3d::Zero();
+    distance = std::numeric_limits<double>::infinity();
+    Work::Face_index nearest;
     for(auto f : reference_mesh.faces())
     {
       const auto t = GR::face_vertices(reference_mesh, f);
-      const GR::Vector_3d a = GR::to_vector(reference_mesh.point(t[0])), b = GR::to_vector(reference_mesh.point(t[1])),
-                          c = GR::to_vector(reference_mesh.point(t[2]));
       std::array<double, 3> w;
-      const double d = (x - GR::closest_point_on_triangle(x, a, b, c, w)).squaredNorm();
-      if(d < best)
+      const double d = (x - GR::closest_point_on_triangle(x, GR::to_vector(reference_mesh.point(t[0])),
+                                                          GR::to_vector(reference_mesh.point(t[1])),
+                                                          GR::to_vector(reference_mesh.point(t[2])), w)).norm();
+      if(d < distance)
       {
-        best = d;
-        normal = GR::area_vector(a, b, c).normalized();
+        distance = d;
+        nearest = f;
       }
     }
-    return normal;
+    return nearest;
+  }
+
+  // For the fold-over check.
+  GR::Vector_3d reference_normal(const GR::Vector_3d& x) const
+  {
+    double d;
+    const auto t = GR::face_vertices(reference_mesh, nearest_reference_face(x, d));
+    return GR::area_vector(GR::to_vector(reference_mesh.point(t[0])), GR::to_vector(reference_mesh.point(t[1])),
+                           GR::to_vector(reference_mesh.point(t[2]))).normalized();
+  }
+
+  double reference_distance(const GR::Vector_3d& x) const
+  {
+    double d;
+    nearest_reference_face(x, d);
+    return d;
   }
 
   Work mesh;
@@ -815,6 +831,42 @@ TEST(Connectivity_pass, RelaxationKeepsOnlyMovesThatDoNotRaiseTheLocalEnergy)
     }).relax();
     EXPECT_EQ(moved, 1u);
     EXPECT_LT((s.point(v) - home).norm(), (p - home).norm());
+  }
+}
+
+// With re-sampling, a move away from feature lines is kept while its triangles stay within the
+// sizing tolerance of the reference, whatever the energy says; next to a feature line the energy
+// rule still holds. The energy here rises with any move.
+TEST(Connectivity_pass, ResamplingRelaxationKeepsTheTrianglesWithinTheTolerance)
+{
+  // A sheet folded by 45 degrees along the grid line i = 6: a sharp line across it.
+  const Work folded = to_work_mesh(make_grid(12, 12, [](std::size_t i, std::size_t j) {
+    return Point(double(i) / 11, double(j) / 11, i > 6 ? double(i - 6) / 11 : 0.0);
+  }));
+  const Work torus = to_work_mesh(make_torus(30, 12, 1.0, 0.35));
+  for(const Work* input : {&torus, &folded})
+  {
+    Pass_setup s(*input);
+    s.sizing = GR::curvature_sizing(s.reference_mesh, s.reference_feature_edge, GR::mean_edge_length(s.reference_mesh), 35);
+    const Work start = s.mesh;
+    const std::size_t moved = s.optimizer_with_features([&start](Work::Vertex_index u, const GR::Vector_3d& x, double) {
+      return (x - GR::to_vector(start.point(u))).squaredNorm();
+    }).relax();
+    ASSERT_EQ(s.input_feature_edges.size(), input == &folded ? 44u + 11u : 0u); // the border's and the fold's
+    EXPECT_GT(moved, s.mesh.number_of_vertices() / 5);
+    for(auto f : s.mesh.faces())
+    {
+      GR::Vector_3d centroid(0, 0, 0);
+      for(auto u : vertices_around_face(s.mesh.halfedge(f), s.mesh))
+        centroid += s.point(u) / 3;
+      EXPECT_LE(s.reference_distance(centroid), s.sizing.tolerance * (1 + 1e-9));
+    }
+    for(auto v : s.mesh.vertices())
+      for(auto h : halfedges_around_target(s.mesh.halfedge(v), s.mesh))
+        if(s.state.kind[std::size_t(s.mesh.source(h))] != GR::Vertex_kind::free_vertex)
+        {
+          EXPECT_EQ(s.mesh.point(v), start.point(v)) << "a vertex next to a feature line moved";
+        }
   }
 }
 

@@ -74,8 +74,12 @@ std::string quality_usage()
     line += (line.empty() ? "" : ",") + m;
   }
   meshes += line;
+  const auto defaults = PMP::internal::Graphcut_remeshing::Remeshing_options().sharp_angle_bounds;
+  std::ostringstream bounds;
+  bounds << defaults.first << ' ' << defaults.second;
   return "\n"
-         "usage: benchmark_remeshing --quality [--meshes LIST] [--seeds LIST] [--resampling] [--data DIR]\n"
+         "usage: benchmark_remeshing --quality [--meshes LIST] [--seeds LIST] [--resampling]\n"
+         "                                     [--sharp-angle LOW HIGH] [--data DIR]\n"
          "                                     [--json FILE]\n"
          "\n"
          "Compares the quality of graphcut_isotropic_remeshing (defaults, each seed) with that of CGAL's\n"
@@ -95,6 +99,9 @@ std::string quality_usage()
          "  --seeds LIST            comma-separated random seeds of our remesher (default 0,1)\n"
          "  --resampling            our remesher with graphcut_parameters::resampling(true) (default:\n"
          "                          off, as the remesher's default)\n"
+         "  --sharp-angle LOW HIGH  our remesher's sharp-edge hysteresis bounds, degrees (default " +
+         bounds.str() +
+         ")\n"
          "  --data DIR              as above\n"
          "  --json FILE             also write the rows as JSON (distances there are plain ratios\n"
          "                          to the diagonal, not x1e-3)\n";
@@ -648,6 +655,7 @@ int main(int argc, char** argv)
   std::string json_file;
   // The two modes take different mesh names, so --meshes is checked once the mode is known.
   bool quality = false, resampling = false;
+  std::optional<std::pair<double, double>> sharp_angle_bounds;
   std::optional<std::string> mesh_list, seed_list;
   std::vector<std::string> timing_only; // options of the timing mode given, refused with --quality
   for(int i = 1; i < argc; ++i)
@@ -671,6 +679,15 @@ int main(int argc, char** argv)
       seed_list = value();
     else if(arg == "--resampling")
       resampling = true;
+    else if(arg == "--sharp-angle")
+    {
+      const std::string low = value(), high = value();
+      std::pair<double, double> bounds;
+      if(!tools::parse_number(low, bounds.first) || !tools::parse_number(high, bounds.second) || !(bounds.first <= bounds.second) ||
+         bounds.second > 180)
+        fail("--sharp-angle needs LOW <= HIGH <= 180");
+      sharp_angle_bounds = bounds;
+    }
     else if(arg == "--repetitions" || arg == "--large-repetitions")
     {
       timing_only.push_back(arg);
@@ -723,10 +740,13 @@ int main(int argc, char** argv)
     if(seed_list && !parse_seeds(*seed_list, options.seeds))
       fail("--seeds needs a comma-separated list of whole numbers below 2^32");
     options.resampling = resampling;
+    if(sharp_angle_bounds)
+      options.sharp_angle_bounds = *sharp_angle_bounds;
     return run_quality_mode(options, json_file);
   }
-  if(seed_list || resampling)
-    fail(std::string(seed_list ? "--seeds" : "--resampling") + " applies to --quality only");
+  if(seed_list || resampling || sharp_angle_bounds)
+    fail(std::string(seed_list ? "--seeds" : resampling ? "--resampling" : "--sharp-angle") +
+         " applies to --quality only");
   if(mesh_list)
   {
     meshes = split(*mesh_list);

@@ -154,24 +154,6 @@ private:
   bool m_drawn = false;
 };
 
-template <typename T>
-bool parse_number(const std::string& text, T& value)
-{
-  try
-  {
-    std::size_t used = 0;
-    const double d = std::stod(text, &used);
-    if(used != text.size() || !std::isfinite(d) || d < 0)
-      return false;
-    value = static_cast<T>(d);
-    return double(value) == d || !std::is_integral<T>::value;
-  }
-  catch(const std::exception&)
-  {
-    return false;
-  }
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -190,7 +172,7 @@ int main(int argc, char** argv)
     const std::string arg = argv[i];
     auto value = [&](auto& target) {
       typename std::remove_reference_t<decltype(target)>::value_type number{};
-      if(i + 1 >= argc || !parse_number(argv[i + 1], number))
+      if(i + 1 >= argc || !tools::parse_number(argv[i + 1], number))
       {
         std::cerr << "graphcut_remesh: " << arg << " needs a non-negative number\n";
         std::exit(EXIT_FAILURE);

@@ -50,6 +50,9 @@ struct Quality_options
   std::vector<std::string> meshes = quality_default_meshes();
   std::vector<unsigned int> seeds = {0, 1};
   bool resampling = false; // graphcut_parameters::resampling of our remesher
+  // graphcut_parameters::sharp_angle_bounds of our remesher
+  std::pair<double, double> sharp_angle_bounds =
+    CGAL::Polygon_mesh_processing::internal::Graphcut_remeshing::Remeshing_options().sharp_angle_bounds;
 };
 
 // The figures of one remeshed output.
@@ -252,7 +255,8 @@ void run_quality_comparison(const Quality_options& options, const CgalRemesh& re
       const auto start = std::chrono::steady_clock::now();
       PMP::graphcut_isotropic_remeshing(
         ours_output, PMP::graphcut_parameters::combine(CGAL::parameters::random_seed(seed),
-                                                       PMP::graphcut_parameters::resampling(options.resampling)));
+                                                       PMP::graphcut_parameters::resampling(options.resampling),
+                                                       PMP::graphcut_parameters::sharp_angle_bounds(options.sharp_angle_bounds)));
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       // Untimed, as for CGAL's output: whatever the remesher leaves removed is not counted.
       ours_output.collect_garbage();

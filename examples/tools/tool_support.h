@@ -33,6 +33,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -40,6 +41,26 @@ namespace graphcut_remeshing_tools {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+// Reads a whole non-negative finite number from `text` into `value` (an integral T only when the
+// number is whole); false otherwise.
+template <typename T>
+bool parse_number(const std::string& text, T& value)
+{
+  try
+  {
+    std::size_t used = 0;
+    const double d = std::stod(text, &used);
+    if(used != text.size() || !std::isfinite(d) || d < 0)
+      return false;
+    value = static_cast<T>(d);
+    return double(value) == d || !std::is_integral<T>::value;
+  }
+  catch(const std::exception&)
+  {
+    return false;
+  }
+}
 
 // A refusal of the input: its message is the one line a tool prints before exiting with code 1.
 struct Input_error : std::runtime_error

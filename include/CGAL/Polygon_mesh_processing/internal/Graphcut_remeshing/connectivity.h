@@ -774,12 +774,7 @@ public:
           if(!is_acceptable_triangle(y, link[k].first, link[k].second, normals[k], min_turn_cosine) ||
              !is_acceptable_triangle(y, link[k].first, link[k].second, m_reference.normal(hint)))
             return false;
-        // Beyond the paper: a move that raises the local energy is not kept. Plain smoothing
-        // undoes the fit of the relocation where the surface is curved.
-        if(m_local_energy && std::isnan(energy_here))
-          energy_here = m_local_energy(v, x, std::numeric_limits<double>::infinity());
-        if(m_local_energy &&
-           !(m_local_energy(v, y, std::nextafter(energy_here, std::numeric_limits<double>::infinity())) <= energy_here))
+        if(!keeps_fit(v, x, y, link, energy_here))
           return false;
         m_mesh.point(v) = Work_kernel::Point_3(y.x(), y.y(), y.z());
         return true;
@@ -789,6 +784,35 @@ public:
         ++moved;
     }
     return moved;
+  }
+
+  // Beyond the paper: whether the relaxation may move v from x to y. Plain smoothing undoes the
+  // fit of the relocation where the surface is curved, so a move that raises the local energy is
+  // not kept. When the surface is re-sampled, a move away from feature lines is kept as long as
+  // its triangles stay within the sizing tolerance of the reference (at their centroids), as a
+  // collapse's must: the energy rule would keep the thin triangles of a coarse tube.
+  bool keeps_fit(Vertex v, const Vector_3d& x, const Vector_3d& y, const Link& link, double& energy_here) const
+  {
+    if(m_sizing.resamples() && !next_to_feature(v))
+    {
+      for(const auto& side : link)
+        if(distance_to_reference((y + side.first + side.second) / 3, v) > m_sizing.tolerance)
+          return false;
+      return true;
+    }
+    if(!m_local_energy)
+      return true;
+    if(std::isnan(energy_here))
+      energy_here = m_local_energy(v, x, std::numeric_limits<double>::infinity());
+    return m_local_energy(v, y, std::nextafter(energy_here, std::numeric_limits<double>::infinity())) <= energy_here;
+  }
+
+  bool next_to_feature(Vertex v) const
+  {
+    for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      if(m_state.kind[std::size_t(m_mesh.source(h))] != Vertex_kind::free_vertex)
+        return true;
+    return false;
   }
 
   // Grows the per-element arrays to the mesh's capacity (removed elements included).
