@@ -14,6 +14,8 @@
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/transform.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/generators.h>
 #include <CGAL/Aff_transformation_3.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -22,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -264,3 +267,51 @@ TEST(SurfaceDistance, FandiskAgreesWithMetroStyleReference)
   std::cout << "fandisk vs isotropic_remeshing: Hausdorff " << ours.hausdorff << " (reference "
             << reference_hausdorff << "), RMS " << ours.rms << " (reference " << reference_rms << ")\n";
 }
+
+namespace {
+
+// A triangulated axis-aligned cube of side `side` centred at `center`: its twelve edges are the
+// sharp ones (90 degrees), the face diagonals are flat.
+Mesh make_cube(double side, const Point& center)
+{
+  const double h = side / 2;
+  auto p = [&](double x, double y, double z) { return center + Vector(h * x, h * y, h * z); };
+  Mesh cube;
+  CGAL::make_hexahedron(p(-1, -1, -1), p(1, -1, -1), p(1, 1, -1), p(-1, 1, -1), p(-1, 1, 1), p(-1, -1, 1),
+                        p(1, -1, 1), p(1, 1, 1), cube);
+  PMP::triangulate_faces(cube);
+  return cube;
+}
+
+} // namespace
+
+TEST(SharpEdgeDistance, ScaledCubeIsAtTheEdgeOffset)
+{
+  // Scaling a cube by k about its centre moves each edge by (k - 1) side / 2 along both of its
+  // faces' normals: the nearest edge of the scaled cube is that offset times sqrt(2) away from
+  // every point of the original edge, and the diagonal is side * sqrt(3).
+  // Each of the cube's edges is sampled 1e5 / sqrt(3) times: one comparison a scale.
+  const std::pair<double, double> cases[] = {{0.5, 1.2}, {100.0, 1.01}};
+  for(const auto& [side, k] : cases)
+  {
+    const Point center(1, -2, 3);
+    const Mesh cube = make_cube(side, center);
+    EXPECT_LT(PMP::relative_sharp_edge_distance(cube, cube, 45, 25), 1e-15) << "side " << side;
+    const double expected = (k - 1) / 2 * std::sqrt(2.0) / std::sqrt(3.0);
+    EXPECT_NEAR(PMP::relative_sharp_edge_distance(cube, make_cube(k * side, center), 45, 25), expected, 1e-12)
+      << "side " << side << ", k " << k;
+  }
+}
+
+TEST(SharpEdgeDistance, ThresholdsSelectTheEdges)
+{
+  const Mesh cube = make_cube(1, Point(0, 0, 0));
+  const Mesh sphere = make_sphere(3, 0.5);
+  // The cube's edges are at 90 degrees: none counts above 95.
+  EXPECT_EQ(PMP::relative_sharp_edge_distance(cube, cube, 95, 25), 0);
+  EXPECT_TRUE(std::isinf(PMP::relative_sharp_edge_distance(cube, cube, 45, 95)));
+  // A finely sampled sphere has no sharp edge: the cube's edges are nowhere near one.
+  EXPECT_TRUE(std::isinf(PMP::relative_sharp_edge_distance(cube, sphere, 45, 25)));
+  EXPECT_EQ(PMP::relative_sharp_edge_distance(sphere, cube, 45, 25), 0);
+}
+

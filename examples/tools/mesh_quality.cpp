@@ -27,7 +27,10 @@ const char* const usage =
   "Prints vertex and face counts, the percentage of irregular vertices, the mean per-face\n"
   "minimum and maximum angles and the extreme angles of ORIGINAL (and REMESHED). With two\n"
   "meshes it also prints the symmetric Hausdorff distance and the larger one-sided RMS\n"
-  "distance, divided by ORIGINAL's bounding-box diagonal, from a Metro-style sampling.\n"
+  "distance, divided by ORIGINAL's bounding-box diagonal, from a Metro-style sampling, and\n"
+  "how well REMESHED kept ORIGINAL's sharp lines: the largest distance from a point of an\n"
+  "edge of ORIGINAL with a dihedral angle of 45 degrees or more to an edge of REMESHED with\n"
+  "25 degrees or more, in the same unit (inf, null in JSON: REMESHED has no such edge).\n"
   "\n"
   "  --check       check that REMESHED, read as it was written, is a valid triangle mesh\n"
   "                without degenerate faces, with ORIGINAL's topology (Euler characteristic,\n"
@@ -124,11 +127,15 @@ int main(int argc, char** argv)
     }
 
     PMP::Relative_surface_distance distance;
+    double sharp_lines = 0;
     if(meshes.size() == 2)
+    {
       distance = PMP::relative_surface_distance(
         meshes[0], meshes[1],
         CGAL::parameters::number_of_points_on_faces(std::size_t(samples))
                          .random_seed(static_cast<unsigned int>(seed)));
+      sharp_lines = PMP::relative_sharp_edge_distance(meshes[0], meshes[1], 45, 25);
+    }
 
     if(json)
     {
@@ -142,12 +149,13 @@ int main(int argc, char** argv)
         tools::write_json(std::cout, reports[1]);
         std::cout << ", \"distance\": ";
         tools::write_json(std::cout, distance);
-        std::cout << "}";
+        std::cout << ", \"sharp_lines\": " << tools::json_number(sharp_lines) << "}";
       }
       std::cout << std::endl;
     }
     else
-      tools::write_table(std::cout, titles, reports, meshes.size() == 2 ? &distance : nullptr);
+      tools::write_table(std::cout, titles, reports, meshes.size() == 2 ? &distance : nullptr,
+                         meshes.size() == 2 ? &sharp_lines : nullptr);
   }
   catch(const tools::Input_error& e)
   {

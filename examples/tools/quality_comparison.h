@@ -41,6 +41,10 @@ inline const std::vector<std::string>& quality_default_meshes()
 constexpr double quality_max_vertex_ratio = 1.15;  // at most 15 % more vertices
 constexpr double quality_max_hausdorff_ratio = 0.7; // 30 % closer to the input, at least
 constexpr double quality_poor_angle = 30;           // degrees: a triangle below it is poor
+// Degrees: how far the input's edges at least this sharp are from the output's edges at least
+// that sharp (issue 23's test of fandisk's sharp lines).
+constexpr double quality_input_sharp_angle = 45;
+constexpr double quality_output_sharp_angle = 25;
 // Passed explicitly rather than left to the default, so that the footnote stays true.
 constexpr std::size_t quality_distance_samples = 300000;
 
@@ -64,6 +68,7 @@ struct Remeshing_quality
   double poor_percentage = 0;     // share of triangles with an angle below quality_poor_angle
   double hausdorff = 0;           // ratio to the input's bounding-box diagonal
   double rms = 0;                 // the same
+  double sharp_line_distance = 0; // the same; see quality_input_sharp_angle
   double seconds = 0;             // the remeshing call alone
 };
 
@@ -107,6 +112,8 @@ inline Remeshing_quality measure_remeshing(const Mesh& input, const Mesh& output
     input, output, CGAL::parameters::number_of_points_on_faces(quality_distance_samples));
   q.hausdorff = d.hausdorff;
   q.rms = d.rms;
+  q.sharp_line_distance =
+    PMP::relative_sharp_edge_distance(input, output, quality_input_sharp_angle, quality_output_sharp_angle);
   q.seconds = seconds;
   return q;
 }
@@ -153,7 +160,8 @@ inline void write_quality_table(std::ostream& out, const std::vector<Quality_row
   out << std::left << std::setw(16) << "mesh" << std::right << std::setw(4) << "seed" << std::setw(6) << "V in"
       << std::setw(8) << "V ours" << std::setw(8) << "V cgal" << std::setw(15) << "min ours/cgal"
       << std::setw(15) << "max ours/cgal" << std::setw(17) << "<30 % ours/cgal" << std::setw(13)
-      << "H ours/cgal" << std::setw(15) << "RMS ours/cgal" << std::setw(14) << "s ours/cgal"
+      << "H ours/cgal" << std::setw(15) << "RMS ours/cgal" << std::setw(17) << "sharp ours/cgal"
+      << std::setw(14) << "s ours/cgal"
       << "  bars\n";
   std::size_t met = 0;
   for(const Quality_row& r : rows)
@@ -165,7 +173,8 @@ inline void write_quality_table(std::ostream& out, const std::vector<Quality_row
         << quality_pair(o.mean_max_angle, c.mean_max_angle, 5, 6, 2) << std::setw(17)
         << quality_pair(o.poor_percentage, c.poor_percentage, 5, 5, 1) << std::setw(13)
         << quality_pair(1e3 * o.hausdorff, 1e3 * c.hausdorff, 5, 5, 2) << std::setw(15)
-        << quality_pair(1e3 * o.rms, 1e3 * c.rms, 5, 5, 3) << std::setw(14)
+        << quality_pair(1e3 * o.rms, 1e3 * c.rms, 5, 5, 3) << std::setw(17)
+        << quality_pair(1e3 * o.sharp_line_distance, 1e3 * c.sharp_line_distance, 6, 6, 3) << std::setw(14)
         << quality_pair(o.seconds, c.seconds, 6, 5, 2) << "  " << quality_bars_text(r) << '\n';
     met += missed_quality_bars(r).empty() ? 1 : 0;
   }
@@ -178,7 +187,9 @@ inline void write_quality_table(std::ostream& out, const std::vector<Quality_row
       << " %: share of triangles with an angle below " << quality_poor_angle << " degrees; s: seconds of the "
       << "remeshing call alone\n"
       << "H, RMS: distances to the input, x1e-3 of the input's bounding-box diagonal, "
-      << quality_distance_samples / 1000 << "k samples a side\n";
+      << quality_distance_samples / 1000 << "k samples a side\n"
+      << "sharp: largest distance from the input's edges with a dihedral angle >= " << quality_input_sharp_angle
+      << " degrees to the output's edges >= " << quality_output_sharp_angle << " degrees, the same unit\n";
 }
 
 inline void write_quality_json(std::ostream& out, const Remeshing_quality& q)
@@ -187,6 +198,7 @@ inline void write_quality_json(std::ostream& out, const Remeshing_quality& q)
       << ", \"mean_max_angle\": " << json_number(q.mean_max_angle)
       << ", \"poor_percent\": " << json_number(q.poor_percentage)
       << ", \"hausdorff\": " << json_number(q.hausdorff) << ", \"rms\": " << json_number(q.rms)
+      << ", \"sharp_line_distance\": " << json_number(q.sharp_line_distance)
       << ", \"seconds\": " << json_number(q.seconds) << "}";
 }
 

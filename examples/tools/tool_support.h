@@ -378,6 +378,8 @@ inline Mesh read_mesh_as_written(const std::string& path)
 
 inline std::string json_number(double x)
 {
+  if(!std::isfinite(x))
+    return "null"; // JSON has no infinity
   std::ostringstream out;
   out << std::setprecision(10) << x;
   return out.str();
@@ -401,10 +403,12 @@ inline void write_json(std::ostream& out,
   out << "{\"hausdorff\": " << json_number(d.hausdorff) << ", \"rms\": " << json_number(d.rms) << "}";
 }
 
-// A readable table: one column a mesh, then the distances (x 1e-3 of the first mesh's diagonal).
+// A readable table: one column a mesh, then the distances (x 1e-3 of the first mesh's diagonal),
+// and the sharp lines' one when given.
 inline void write_table(std::ostream& out, const std::vector<std::string>& titles,
                         const std::vector<CGAL::Polygon_mesh_processing::Mesh_quality_report>& q,
-                        const CGAL::Polygon_mesh_processing::Relative_surface_distance* d = nullptr)
+                        const CGAL::Polygon_mesh_processing::Relative_surface_distance* d = nullptr,
+                        const double* sharp_lines = nullptr)
 {
   const int label = 26, column = 16;
   auto row = [&](const std::string& name, auto value_of) {
@@ -436,6 +440,9 @@ inline void write_table(std::ostream& out, const std::vector<std::string>& title
     out << std::left << std::setw(label) << "RMS / diag (1e-3)" << std::right
         << std::setw(column * int(q.size())) << fixed(1e3 * d->rms, 4) << '\n';
   }
+  if(sharp_lines != nullptr)
+    out << std::left << std::setw(label) << "sharp lines / diag (1e-3)" << std::right
+        << std::setw(column * int(q.size())) << fixed(1e3 * *sharp_lines, 4) << '\n';
 }
 
 } // namespace graphcut_remeshing_tools

@@ -141,7 +141,8 @@ with tempfile.TemporaryDirectory() as tmp:
     r = run(['--json', '--samples', '20000', square, moved])
     check(r.returncode == 0, "two meshes: exit code %d (%s)" % (r.returncode, r.stderr))
     both = json.loads(r.stdout)
-    check(sorted(both.keys()) == ['distance', 'original', 'remeshed'], "two meshes: keys %s" % both.keys())
+    check(sorted(both.keys()) == ['distance', 'original', 'remeshed', 'sharp_lines'], "two meshes: keys %s" % both.keys())
+    check(both['sharp_lines'] == 0, "a flat square has no sharp line: %r" % both['sharp_lines'])
     check(sorted(both['distance'].keys()) == ['hausdorff', 'rms'], "distance keys %s" % both['distance'].keys())
     expected = 1.0 / math.sqrt(8.0)
     check(abs(both['distance']['hausdorff'] - expected) < 1e-8, "hausdorff %r" % both['distance'])
@@ -150,12 +151,22 @@ with tempfile.TemporaryDirectory() as tmp:
     r = run(['--json', '--samples', '20000', fandisk, fandisk])
     d = json.loads(r.stdout)['distance']
     check(d['hausdorff'] < 1e-12 and d['rms'] < 1e-12, "fandisk to itself: %r" % d)
+    check(json.loads(r.stdout)['sharp_lines'] < 1e-12, "fandisk's sharp lines to themselves")
+    # A sheet folded at a right angle along x = 1 (z = |x - 1|) and its copy moved by 1 along z:
+    # the crease moved by 1, the diagonal is 3; on a flat copy there is no crease left (null).
+    roof, roof_moved = os.path.join(tmp, 'roof.off'), os.path.join(tmp, 'roof_moved.off')
+    write_off(roof, [(x, y, abs(x - 1.0)) for (x, y, z) in pts], tris)
+    write_off(roof_moved, [(x, y, abs(x - 1.0) + 1.0) for (x, y, z) in pts], tris)
+    s = json.loads(run(['--json', '--samples', '1000', roof, roof_moved]).stdout)['sharp_lines']
+    check(abs(s - 1.0 / 3.0) < 1e-9, "moved crease: %r" % s)
+    s = json.loads(run(['--json', '--samples', '1000', roof, square]).stdout)['sharp_lines']
+    check(s is None, "crease to a flat square: %r" % s)
     # Same seed, same figures; the table shows the distances too.
     r1 = run(['--json', '--samples', '5000', '--seed', '3', square, moved]).stdout
     r2 = run(['--json', '--samples', '5000', '--seed', '3', square, moved]).stdout
     check(r1 == r2, "same seed gave different output")
     r = run([square, moved])
-    check('Hausdorff' in r.stdout and 'RMS' in r.stdout, "two-mesh table: %r" % r.stdout)
+    check('Hausdorff' in r.stdout and 'RMS' in r.stdout and 'sharp lines' in r.stdout, "two-mesh table: %r" % r.stdout)
 
     # 3. Refusals: one line on stderr, exit code 1.
     expect_refusal('missing file', [os.path.join(tmp, 'nothing.off')])

@@ -256,6 +256,82 @@ relative_surface_distance(const TriangleMesh1& tm1, const TriangleMesh2& tm2,
   return result;
 }
 
+/*!
+ * \ingroup PkgGraphcutRemeshingRef
+ *
+ * computes how far the sharp edges of `tm1` are from those of `tm2`: the largest distance from a
+ * point of an edge of `tm1` whose dihedral angle is at least `sharp_angle_1` degrees to the
+ * nearest edge of `tm2` whose dihedral angle is at least `sharp_angle_2` degrees, divided by the
+ * length of the bounding-box diagonal of `tm1`. With `tm1` the input of a remeshing and `tm2` its
+ * output, it says whether the output kept the input's sharp lines: a lower `sharp_angle_2` lets
+ * a line that the output kept but made a little blunter count. Border edges have no dihedral
+ * angle and are not counted. The edges of `tm1` are sampled every 1e-5 of the diagonal, which is
+ * how much the result may be below the true maximum, at most.
+ *
+ * @tparam TriangleMesh1 a model of `FaceListGraph` and `EdgeListGraph`
+ * @tparam TriangleMesh2 a model of `FaceListGraph` and `EdgeListGraph`
+ * @tparam NamedParameters1 a sequence of \ref bgl_namedparameters "Named Parameters"
+ * @tparam NamedParameters2 a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * @param tm1 the mesh whose sharp edges are measured, and whose diagonal is the unit
+ * @param tm2 the mesh whose sharp edges they are measured to
+ * @param sharp_angle_1 the smallest dihedral angle of a sharp edge of `tm1`, in degrees
+ * @param sharp_angle_2 the smallest dihedral angle of a sharp edge of `tm2`, in degrees
+ * @param np1 an optional sequence of \ref bgl_namedparameters "Named Parameters" for `tm1` among the ones listed below
+ * @param np2 an optional sequence of \ref bgl_namedparameters "Named Parameters" for `tm2` among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{a property map associating points to the vertices of the mesh}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with the mesh's `%vertex_descriptor`
+ *                    as key type and `%Point_3` as value type}
+ *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a class model of `Kernel`}
+ *     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \return the relative distance: 0 if `tm1` has no sharp edge, infinity if `tm2` has none and
+ *         `tm1` has some
+ *
+ * \pre `CGAL::is_triangle_mesh(tm1)` and `CGAL::is_triangle_mesh(tm2)`
+ */
+template <typename TriangleMesh1, typename TriangleMesh2,
+          typename NamedParameters1 = parameters::Default_named_parameters,
+          typename NamedParameters2 = parameters::Default_named_parameters>
+double relative_sharp_edge_distance(const TriangleMesh1& tm1, const TriangleMesh2& tm2,
+                                    double sharp_angle_1, double sharp_angle_2,
+                                    const NamedParameters1& np1 = parameters::default_values(),
+                                    const NamedParameters2& np2 = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  namespace GR = internal::Graphcut_remeshing;
+
+  CGAL_precondition(CGAL::is_triangle_mesh(tm1));
+  CGAL_precondition(CGAL::is_triangle_mesh(tm2));
+
+  const auto vpm1 = choose_parameter(get_parameter(np1, internal_np::vertex_point),
+                                     get_const_property_map(CGAL::vertex_point, tm1));
+  const auto vpm2 = choose_parameter(get_parameter(np2, internal_np::vertex_point),
+                                     get_const_property_map(CGAL::vertex_point, tm2));
+  using GT1 = typename GetGeomTraits<TriangleMesh1, NamedParameters1>::type;
+  const GT1 gt1 = choose_parameter<GT1>(get_parameter(np1, internal_np::geom_traits));
+
+  const Bbox_3 box = bbox(tm1, parameters::vertex_point_map(vpm1).geom_traits(gt1));
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
+                                    CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  const auto from = GR::sharp_edge_segments(tm1, vpm1, sharp_angle_1);
+  if(from.empty() || !(diagonal > 0))
+    return 0;
+  const auto to = GR::sharp_edge_segments(tm2, vpm2, sharp_angle_2);
+  return GR::max_distance_to_segments<GT1>(from, to, 1e-5 * diagonal) / diagonal;
+}
+
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 

@@ -766,6 +766,7 @@ public:
         normals.push_back(area_vector(x, q, p));
       }
       const Vector_3d normal = m_reference.frame(m_state.closest[std::size_t(v)]).normal;
+      const bool within_tolerance_rule = m_sizing.resamples() && !next_to_feature(v);
       double energy_here = std::numeric_limits<double>::quiet_NaN(); // once a move is acceptable
       auto try_move = [&](const Vector_3d& target) {
         Face hint = m_state.vertex_hint[std::size_t(v)];
@@ -774,7 +775,7 @@ public:
           if(!is_acceptable_triangle(y, link[k].first, link[k].second, normals[k], min_turn_cosine) ||
              !is_acceptable_triangle(y, link[k].first, link[k].second, m_reference.normal(hint)))
             return false;
-        if(!keeps_fit(v, x, y, link, energy_here))
+        if(!keeps_fit(within_tolerance_rule, v, x, y, link, energy_here))
           return false;
         m_mesh.point(v) = Work_kernel::Point_3(y.x(), y.y(), y.z());
         return true;
@@ -791,9 +792,10 @@ public:
   // not kept. When the surface is re-sampled, a move away from feature lines is kept as long as
   // its triangles stay within the sizing tolerance of the reference (at their centroids), as a
   // collapse's must: the energy rule would keep the thin triangles of a coarse tube.
-  bool keeps_fit(Vertex v, const Vector_3d& x, const Vector_3d& y, const Link& link, double& energy_here) const
+  bool keeps_fit(bool within_tolerance_rule, Vertex v, const Vector_3d& x, const Vector_3d& y, const Link& link,
+                 double& energy_here) const
   {
-    if(m_sizing.resamples() && !next_to_feature(v))
+    if(within_tolerance_rule)
     {
       for(const auto& side : link)
         if(distance_to_reference((y + side.first + side.second) / 3, v) > m_sizing.tolerance)

@@ -37,8 +37,9 @@ struct Sizing
   // with a curvature_sizing() field, the one that field was solved for.
   double tolerance = 1e-3;
   // The angle in degrees beyond which a dihedral is a crease rather than curvature, and a turn of
-  // a feature line a corner that re-sampling keeps: the sharp edges' upper bound (eq. 8).
-  double corner_angle = 35;
+  // a feature line a corner that re-sampling keeps: the sharp edges' upper bound (eq. 8). Set,
+  // with `target`, by curvature_sizing(); read only when re-sampling.
+  double corner_angle = 0;
   std::vector<double> target; // by reference vertex; empty: the length comes from the frames
 
   bool resamples() const { return !target.empty(); }

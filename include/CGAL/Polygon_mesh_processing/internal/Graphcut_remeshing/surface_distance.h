@@ -1,7 +1,8 @@
 // Copyright (c) 2026 the Graphcut_remeshing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Metro-style one-sided distance from a densely sampled surface to another triangle mesh.
+// Metro-style one-sided distance from a densely sampled surface to another triangle mesh, and
+// from the sharp edges of one mesh to those of another.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_SURFACE_DISTANCE_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_SURFACE_DISTANCE_H
@@ -10,19 +11,24 @@
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/boost/graph/properties.h>
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/version.h>
 
 #if CGAL_VERSION_NR >= 1060000000
+#include <CGAL/AABB_segment_primitive_3.h>
 #include <CGAL/AABB_traits_3.h>
 #else
+#include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #endif
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -128,6 +134,73 @@ One_sided_distance distance_to_mesh(const Surface_samples& samples, const Triang
   if(!samples.face_samples.empty())
     d.rms = std::sqrt(sum_squared / double(samples.face_samples.size()));
   return d;
+}
+
+// The edges of `tm` whose dihedral angle is at least `min_degrees` (border edges have none), as
+// segments.
+template <typename TriangleMesh, typename VertexPointMap>
+std::vector<std::array<Vector_3d, 2> > sharp_edge_segments(const TriangleMesh& tm, VertexPointMap vpm,
+                                                           double min_degrees)
+{
+  auto normal = [&](auto h) {
+    const Vector_3d a = to_vector(get(vpm, source(h, tm))), b = to_vector(get(vpm, target(h, tm))),
+                    c = to_vector(get(vpm, target(next(h, tm), tm)));
+    return Vector_3d((b - a).cross(c - a));
+  };
+  std::vector<std::array<Vector_3d, 2> > segments;
+  for(auto e : edges(tm))
+  {
+    const auto h = halfedge(e, tm);
+    if(is_border_edge(h, tm))
+      continue;
+    if(to_degrees(angle_between(normal(h), normal(opposite(h, tm)))) >= min_degrees)
+      segments.push_back({{to_vector(get(vpm, source(h, tm))), to_vector(get(vpm, target(h, tm)))}});
+  }
+  return segments;
+}
+
+// The largest distance from a point of the segments `from` to the union of the segments `to`,
+// with points every `step` along each segment of `from` (the distance is 1-Lipschitz along a
+// segment, so the true maximum is at most step / 2 above). Infinite when `to` is empty and `from`
+// is not.
+template <typename GeomTraits>
+double max_distance_to_segments(const std::vector<std::array<Vector_3d, 2> >& from,
+                                const std::vector<std::array<Vector_3d, 2> >& to, double step)
+{
+  using Point_3 = typename GeomTraits::Point_3;
+  using Segment_3 = typename GeomTraits::Segment_3;
+  using Iterator = typename std::vector<Segment_3>::const_iterator;
+#if CGAL_VERSION_NR >= 1060000000
+  using Primitive = CGAL::AABB_segment_primitive_3<GeomTraits, Iterator>;
+  using Traits = CGAL::AABB_traits_3<GeomTraits, Primitive>;
+#else
+  using Primitive = CGAL::AABB_segment_primitive<GeomTraits, Iterator>;
+  using Traits = CGAL::AABB_traits<GeomTraits, Primitive>;
+#endif
+  if(from.empty())
+    return 0;
+  if(to.empty())
+    return std::numeric_limits<double>::infinity();
+  auto point = [](const Vector_3d& p) { return Point_3(p.x(), p.y(), p.z()); };
+  std::vector<Segment_3> targets;
+  targets.reserve(to.size());
+  for(const auto& s : to)
+    targets.push_back(Segment_3(point(s[0]), point(s[1])));
+  CGAL::AABB_tree<Traits> tree(targets.begin(), targets.end());
+  tree.accelerate_distance_queries();
+
+  double max_squared = 0;
+  for(const auto& s : from)
+  {
+    const std::size_t pieces = (std::max)(std::size_t(1), std::size_t(std::ceil((s[1] - s[0]).norm() / step)));
+    for(std::size_t i = 0; i <= pieces; ++i)
+    {
+      const double t = double(i) / double(pieces);
+      const Vector_3d p = (1 - t) * s[0] + t * s[1];
+      max_squared = (std::max)(max_squared, CGAL::to_double(tree.squared_distance(point(p))));
+    }
+  }
+  return std::sqrt(max_squared);
 }
 
 } // namespace Graphcut_remeshing
