@@ -915,9 +915,12 @@ TEST(GraphcutRemeshing, ConnectivityKeepsTheGuarantees)
     // that its sizing is far from the input's there.
     EXPECT_NEAR(double(q1.number_of_vertices), double(q0.number_of_vertices), 0.25 * double(q0.number_of_vertices))
       << c.name;
-    // Corners (three or more sharp edges) stay where they were, as vertices of the output.
+    // Corners (three or more sharp edges, turns of strong creases) stay where they were, as
+    // vertices of the output; re-sampling keeps the turns beyond the upper bound only.
     const std::vector<char> sharp = GR::detect_sharp_edges(w, 20, 35);
-    const std::vector<GR::Vertex_kind> kind = GR::classify_vertices(w, sharp, std::vector<char>(w.num_vertices(), 0), theta_true);
+    const std::vector<GR::Vertex_kind> kind =
+      GR::classify_vertices(w, sharp, std::vector<char>(w.num_vertices(), 0), theta_true,
+                            resampling ? theta_true : GR::strong_crease_turn_angle);
     std::set<std::array<double, 3> > output_points;
     for(auto v : vertices(c.mesh))
       output_points.insert({{c.mesh.point(v).x(), c.mesh.point(v).y(), c.mesh.point(v).z()}});

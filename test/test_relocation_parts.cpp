@@ -934,6 +934,40 @@ TEST(Features, VertexKindsOnACube)
   EXPECT_EQ(std::count(constrained_kind.begin(), constrained_kind.end(), GR::Vertex_kind::fixed_vertex), 10);
 }
 
+// A sheet folded along the grid line j = 3, sheared so that the crease turns by atan(0.2) (11.3
+// degrees) at i = 3 and runs straight elsewhere. The fold's dihedral angle is about
+// 2 atan(slope).
+TEST(Features, StrongCreasesKeepTheirTurns)
+{
+  for(double slope : {1.0, 0.45}) // about 90 degrees: a strong crease; about 48: a weak one
+  {
+    const Work_mesh m = to_work_mesh(make_grid(8, 7, [slope](std::size_t i, std::size_t j) {
+      const double x = double(i), bend = x > 3 ? 0.2 * (x - 3) : 0;
+      return Point(x, double(j) + bend, slope * std::abs(double(j) - 3));
+    }));
+    std::vector<char> sharp = GR::detect_sharp_edges(m, 20, 35);
+    for(auto e : m.edges())
+      if(m.is_border(e))
+        sharp[std::size_t(e)] = 1;
+    // With re-sampling, only a turn beyond the upper bound (theta_true) is kept.
+    for(double crease_turn : {GR::strong_crease_turn_angle, theta_true})
+    {
+      const std::vector<GR::Vertex_kind> kind =
+        GR::classify_vertices(m, sharp, std::vector<char>(m.number_of_vertices(), 0), theta_true, crease_turn);
+      for(Work_vertex v : m.vertices())
+      {
+        const Work_point& p = m.point(v);
+        const bool on_crease = std::abs(p.z()) < 1e-12, inside = p.x() > 0.5 && p.x() < 6.5;
+        if(!on_crease || !inside)
+          continue;
+        const bool corner = std::abs(p.x() - 3) < 1e-12 && slope == 1.0 && crease_turn < 11.3;
+        EXPECT_EQ(int(kind[std::size_t(v)]), int(corner ? GR::Vertex_kind::fixed_vertex : GR::Vertex_kind::feature_vertex))
+          << "slope " << slope << ", turn limit " << crease_turn << ", vertex " << p;
+      }
+    }
+  }
+}
+
 TEST(Features, SlidingAlongACubeEdge)
 {
   const int n = 4; // the edge from (0,0,0) to (1,0,0) has four segments of length 0.25

@@ -255,7 +255,11 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
     tmesh, vpm, vertex_index, gt.construct_point_3_object());
   GR::Work_mesh work;
   copy.make(work, vcm);
-  auto features = copy.features(work, ecm, options.sharp_angle_bounds);
+  // Re-sampling bounds how far a shortened feature line leaves the removed vertex and keeps a turn
+  // beyond the upper sharp bound; without it, a strong crease keeps every turn of its own.
+  const double crease_turn_angle =
+    options.resampling ? options.sharp_angle_bounds.second : GR::strong_crease_turn_angle;
+  auto features = copy.features(work, ecm, options.sharp_angle_bounds, crease_turn_angle);
   GR::Graphcut_remesher remesher(work, std::move(features.first), std::move(features.second), options);
   Graphcut_remeshing_statistics stats = remesher.run(visitor);
 #ifndef CGAL_NO_POSTCONDITIONS

@@ -13,6 +13,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -76,17 +77,27 @@ enum class Vertex_kind : char
 
 // Beyond the paper's corners (three or more feature edges): a vertex where the border turns by
 // more than `corner_angle` degrees is a corner too. Sliding along the border would cut that turn
-// off and the border would lose its shape (a single triangle would shrink). Sharp feature lines
-// are left to the paper's rule: on coarse organic models they zigzag, and fixing their turns
-// costs quality there.
+// off and the border would lose its shape (a single triangle would shrink). So is a vertex where
+// a strong crease (both its edges at least `strong_crease_angle`) turns by more than
+// `crease_turn_angle`: the crease's shape is carried by its input vertices, and a vertex that
+// slid along it would cut the turn off (fandisk's curved creases, and its V-shaped one that turns
+// by 160 degrees). Re-sampling, which removes and adds vertices on the lines, keeps only the
+// turns beyond `corner_angle` (see its caller). Turns of weaker sharp lines are left to the
+// paper's rule: on coarse organic models those lines zigzag along edges barely above the
+// hysteresis bounds, and fixing their turns costs quality there.
+constexpr double strong_crease_angle = 60;     // degrees
+constexpr double strong_crease_turn_angle = 1; // degrees
+
 template <typename Mesh>
 std::vector<Vertex_kind> classify_vertices(const Mesh& m, const std::vector<char>& feature_edge,
-                                           const std::vector<char>& constrained_vertex, double corner_angle)
+                                           const std::vector<char>& constrained_vertex, double corner_angle,
+                                           double crease_turn_angle = strong_crease_turn_angle)
 {
   std::vector<Vertex_kind> kind(m.number_of_vertices(), Vertex_kind::free_vertex);
   for(auto v : m.vertices())
   {
     int count = 0, border = 0;
+    double weakest = 180; // the smallest dihedral angle of v's feature edges
     std::array<Vector_3d, 2> ends;
     if(m.halfedge(v) != Mesh::null_halfedge())
       for(auto h : halfedges_around_target(m.halfedge(v), m))
@@ -96,8 +107,10 @@ std::vector<Vertex_kind> classify_vertices(const Mesh& m, const std::vector<char
             ends[count] = to_vector(m.point(m.source(h)));
           ++count;
           border += m.is_border(m.edge(h)) ? 1 : 0;
+          weakest = (std::min)(weakest, dihedral_angle(m, m.edge(h)));
         }
-    const bool turns = count == 2 && border == 2 && 180 - to_degrees(angle(to_vector(m.point(v)), ends[0], ends[1])) > corner_angle;
+    const double turn = count == 2 ? 180 - to_degrees(angle(to_vector(m.point(v)), ends[0], ends[1])) : 0;
+    const bool turns = border == 2 ? turn > corner_angle : border == 0 && turn > crease_turn_angle && weakest >= strong_crease_angle;
     if(constrained_vertex[std::size_t(v)] || count >= 3 || turns ||
        m.halfedge(v) == Mesh::null_halfedge())
       kind[std::size_t(v)] = Vertex_kind::fixed_vertex;

@@ -73,10 +73,12 @@ public:
   // By edge of the working copy: the sharp edges of eq. (8) (hysteresis bounds in degrees),
   // border edges, and the user's constrained edges (`ecm`), those as
   // Tracking_state::constrained_edge; the kinds of the vertices with them, where a border that
-  // turns by more than the upper bound is a corner.
+  // turns by more than the upper bound is a corner, and so is a strong crease that turns by more
+  // than `crease_turn_angle` (see classify_vertices()).
   template <typename EdgeConstrainedMap>
   std::pair<std::vector<char>, std::vector<Vertex_kind> > features(const Work_mesh& work, const EdgeConstrainedMap& ecm,
-                                                                   const std::pair<double, double>& sharp_bounds)
+                                                                   const std::pair<double, double>& sharp_bounds,
+                                                                   double crease_turn_angle)
   {
     std::vector<char> feature_edge = detect_sharp_edges(work, sharp_bounds.first, sharp_bounds.second);
     for(auto e : work.edges())
@@ -91,7 +93,8 @@ public:
         feature_edge[std::size_t(work.edge(wh))] = Tracking_state::constrained_edge;
         m_user_edge[std::size_t(work.edge(wh))] = 1;
       }
-    std::vector<Vertex_kind> kind = classify_vertices(work, feature_edge, m_constrained_vertex, sharp_bounds.second);
+    std::vector<Vertex_kind> kind =
+      classify_vertices(work, feature_edge, m_constrained_vertex, sharp_bounds.second, crease_turn_angle);
     return {std::move(feature_edge), std::move(kind)};
   }
 
