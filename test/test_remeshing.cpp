@@ -9,6 +9,7 @@
 #include <CGAL/Polygon_mesh_processing/graphcut_isotropic_remeshing.h>
 #include <CGAL/Polygon_mesh_processing/mesh_quality_report.h>
 
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>

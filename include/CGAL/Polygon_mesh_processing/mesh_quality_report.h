@@ -8,7 +8,6 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Random.h>
 #include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -245,10 +244,7 @@ relative_surface_distance(const TriangleMesh1& tm1, const TriangleMesh2& tm2,
   const GR::One_sided_distance d12 = GR::distance_to_mesh(samples1, tm2, vpm2, gt2);
   const GR::One_sided_distance d21 = GR::distance_to_mesh(samples2, tm1, vpm1, gt1);
 
-  const Bbox_3 box = bbox(tm1, parameters::vertex_point_map(vpm1).geom_traits(gt1));
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
-                                    CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
+  const double diagonal = GR::bounding_box_diagonal(tm1, vpm1);
   if(!(diagonal > 0))
     return result;
   result.hausdorff = (std::max)(d12.max, d21.max) / diagonal;
@@ -319,12 +315,8 @@ double relative_sharp_edge_distance(const TriangleMesh1& tm1, const TriangleMesh
   const auto vpm2 = choose_parameter(get_parameter(np2, internal_np::vertex_point),
                                      get_const_property_map(CGAL::vertex_point, tm2));
   using GT1 = typename GetGeomTraits<TriangleMesh1, NamedParameters1>::type;
-  const GT1 gt1 = choose_parameter<GT1>(get_parameter(np1, internal_np::geom_traits));
 
-  const Bbox_3 box = bbox(tm1, parameters::vertex_point_map(vpm1).geom_traits(gt1));
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
-                                    CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
+  const double diagonal = GR::bounding_box_diagonal(tm1, vpm1);
   const auto from = GR::sharp_edge_segments(tm1, vpm1, sharp_angle_1);
   if(from.empty() || !(diagonal > 0))
     return 0;

@@ -136,6 +136,22 @@ One_sided_distance distance_to_mesh(const Surface_samples& samples, const Triang
   return d;
 }
 
+// The length of the diagonal of the bounding box of `tm`'s vertices (0 without vertices).
+template <typename TriangleMesh, typename VertexPointMap>
+double bounding_box_diagonal(const TriangleMesh& tm, VertexPointMap vpm)
+{
+  if(vertices(tm).begin() == vertices(tm).end())
+    return 0;
+  Vector_3d low = Vector_3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for(auto v : vertices(tm))
+  {
+    const Vector_3d p = to_vector(get(vpm, v));
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  return (high - low).norm();
+}
+
 // The edges of `tm` whose dihedral angle is at least `min_degrees` (border edges have none), as
 // segments.
 template <typename TriangleMesh, typename VertexPointMap>
