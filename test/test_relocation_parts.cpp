@@ -968,6 +968,48 @@ TEST(Features, StrongCreasesKeepTheirTurns)
   }
 }
 
+// The sheared fold of StrongCreasesKeepTheirTurns, classified as with re-sampling (its turn at
+// x = 3 is no corner): how far the crease between two places leaves the chord between them.
+TEST(Features, ChordDeviationAlongACrease)
+{
+  const Work_mesh m = to_work_mesh(make_grid(8, 7, [](std::size_t i, std::size_t j) {
+    const double x = double(i), bend = x > 3 ? 0.2 * (x - 3) : 0;
+    return Point(x, double(j) + bend, std::abs(double(j) - 3));
+  }));
+  std::vector<char> sharp = GR::detect_sharp_edges(m, 20, 35);
+  for(auto e : m.edges())
+    if(m.is_border(e))
+      sharp[std::size_t(e)] = 1;
+  const std::vector<GR::Vertex_kind> kind =
+    GR::classify_vertices(m, sharp, std::vector<char>(m.number_of_vertices(), 0), theta_true, theta_true);
+  const GR::Feature_polylines<Work_mesh> polylines(m, sharp, kind);
+  auto crease = [&](double x) {
+    for(Work_vertex v : m.vertices())
+      if(m.point(v).z() == 0 && m.point(v).x() == x)
+        return polylines.at_vertex(v);
+    return polylines.at_vertex(*m.vertices().begin());
+  };
+  // From x = 1 to x = 5, the vertex at the turn is farthest: 0.8 / |(4, 0.4)| from the chord.
+  const double turn = 0.8 / std::sqrt(16.16);
+  EXPECT_NEAR(polylines.chord_deviation(crease(1), crease(5), 5), turn, 1e-12);
+  EXPECT_NEAR(polylines.chord_deviation(crease(5), crease(1), 5), turn, 1e-12);
+  // Where the crease runs straight, from the middle of a segment or within one, it is the chord.
+  const auto middle = polylines.move(crease(1), Vector_3d(0.5, 0, 0));
+  ASSERT_LE((polylines.point(middle) - Vector_3d(1.5, 3, 0)).norm(), 1e-12);
+  EXPECT_LE(polylines.chord_deviation(middle, crease(3), 5), 1e-15);
+  EXPECT_LE(polylines.chord_deviation(middle, crease(2), 5), 1e-15);
+  EXPECT_NEAR(polylines.chord_deviation(middle, crease(5), 5), 0.6 / std::sqrt(12.41), 1e-12);
+  // Not reached: farther along the crease than the limit, or on another line (the border, past
+  // the crease's end at a corner).
+  EXPECT_EQ(polylines.chord_deviation(crease(1), crease(5), 2.5), std::numeric_limits<double>::infinity());
+  Work_vertex on_border;
+  for(Work_vertex v : m.vertices())
+    if(m.point(v) == Work_point(0, 1, 2))
+      on_border = v;
+  EXPECT_EQ(polylines.chord_deviation(crease(1), polylines.at_vertex(on_border), 100),
+            std::numeric_limits<double>::infinity());
+}
+
 TEST(Features, SlidingAlongACubeEdge)
 {
   const int n = 4; // the edge from (0,0,0) to (1,0,0) has four segments of length 0.25

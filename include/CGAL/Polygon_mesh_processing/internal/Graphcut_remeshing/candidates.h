@@ -217,7 +217,7 @@ private:
     auto accept = [&](const Vector_3d& displacement) {
       const Location l = m_polylines.move(here, displacement);
       const Vector_3d c = m_polylines.point(l);
-      if(!((c - x).norm() <= sigma) || (c - x).norm() == 0 ||
+      if(!((c - x).norm() <= sigma) || (c - x).norm() == 0 || !keeps_lines(around.v, l, c) ||
          !(m_energy.local_evidence(around, c, before, &face_term) < before))
         return false;
       out = c;
@@ -248,6 +248,25 @@ private:
       if(accept(sigma * rng.get_double(0.05, 1.0) * descent))
         return true;
     return false;
+  }
+
+  // Whether v's feature edges stay within the polylines' line tolerance of their polyline with v
+  // at `l` (the point `c`), as its neighbours are now. A fixed neighbour never moved: it is the
+  // reference vertex of the same index.
+  bool keeps_lines(Vertex v, const Location& l, const Vector_3d& c) const
+  {
+    if(!std::isfinite(m_polylines.line_tolerance()))
+      return true;
+    for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      if(m_state.feature_edge[std::size_t(m_mesh.edge(h))])
+      {
+        const Vertex n = m_mesh.source(h);
+        const Location at_n = kind_of(n) == Vertex_kind::feature_vertex ? m_state.location[std::size_t(n)]
+                                                                         : m_polylines.at_vertex(n);
+        if(!(m_polylines.chord_deviation(l, at_n, 2 * (c - position(n)).norm()) <= m_polylines.line_tolerance()))
+          return false;
+      }
+    return true;
   }
 
   // The number of feature neighbours of v and the sum of their positions.

@@ -415,7 +415,8 @@ public:
 
   // A feature edge shortens its line by removing an end that slides on it, where the line runs
   // on: the end has no other feature edge than the next one along, the line turns there by less
-  // than the corner angle, and the shortened line keeps within the tolerance of it.
+  // than the corner angle, and the shortened line keeps within the tolerance of the reference
+  // polyline between its ends.
   bool feature_collapse_ends(Edge e, Collapse& c) const
   {
     const double min_cosine = std::cos(m_sizing.corner_angle * pi / 180);
@@ -431,8 +432,10 @@ public:
         continue;
       const Vector_3d pr = position(r), pk = position(k), px = position(x);
       const double turn = (pr - pk).normalized().dot((px - pr).normalized());
-      if(!(turn > best) || distance_to_segment(pr, pk, px) > m_sizing.tolerance ||
-         (pk - px).norm() > 4.0 / 3.0 * edge_length_target(k, x))
+      if(!(turn > best) || (pk - px).norm() > 4.0 / 3.0 * edge_length_target(k, x))
+        continue;
+      if(!(m_polylines->chord_deviation(feature_location(k), feature_location(x), 2 * (pk - px).norm()) <=
+           m_sizing.tolerance))
         continue;
       best = turn;
       found = true;
@@ -894,15 +897,18 @@ private:
     return m_reference.closest_point(x, hint);
   }
 
+  // Where the end v of a sharp edge is on its reference polyline. A fixed end (a corner or a
+  // user's vertex) never moved, so it is the reference vertex of the same index.
+  Location feature_location(Vertex v) const
+  {
+    return m_state.kind[std::size_t(v)] == Vertex_kind::feature_vertex ? m_state.location[std::size_t(v)]
+                                                                       : m_polylines->at_vertex(v);
+  }
+
   // The point of the reference polyline halfway, along it, from a to b, the ends of a sharp edge.
-  // A fixed end (a corner or a user's vertex) never moved, so it is the reference vertex of the
-  // same index.
   Location feature_midpoint(Vertex a, Vertex b) const
   {
-    const Location from = m_state.kind[std::size_t(a)] == Vertex_kind::feature_vertex
-                            ? m_state.location[std::size_t(a)]
-                            : m_polylines->at_vertex(a);
-    return m_polylines->move(from, (position(b) - position(a)) / 2);
+    return m_polylines->move(feature_location(a), (position(b) - position(a)) / 2);
   }
 
   double distance_to_reference(const Vector_3d& x, Vertex near) const

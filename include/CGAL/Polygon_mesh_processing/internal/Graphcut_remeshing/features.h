@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -140,6 +141,12 @@ public:
     : m_mesh(reference), m_feature(feature_edge), m_kind(kind)
   {}
 
+  // How far a line of the working mesh may leave its polyline (chord_deviation()) when its
+  // vertices slide or go: infinite unless the connectivity stage re-samples the lines, where the
+  // turns of the strong creases are not corners.
+  double line_tolerance() const { return m_line_tolerance; }
+  void set_line_tolerance(double tolerance) { m_line_tolerance = tolerance; }
+
   bool is_feature(Halfedge h) const { return m_feature[std::size_t(m_mesh.edge(h))] != 0; }
 
   // The location of a reference vertex on a feature polyline.
@@ -235,6 +242,49 @@ public:
     return l;
   }
 
+  // How far the polyline between `from` and `to` leaves the chord between their points: the
+  // largest distance of its vertices there (a segment is farthest at an end); infinite when `to`
+  // is not within `limit` of `from` along the polyline, or lies beyond a polyline end or corner.
+  double chord_deviation(const Location& from, const Location& to, double limit) const
+  {
+    const Vector_3d a = point(from), b = point(to);
+    const bool to_inside = to.t > 0 && to.t < 1;
+    const Vertex to_vertex = to.t <= 0 ? m_mesh.source(to.h) : m_mesh.target(to.h);
+    std::vector<Halfedge> starts{from.h, m_mesh.opposite(from.h)};
+    if(from.t <= 0 || from.t >= 1)
+    {
+      starts.clear();
+      for(auto g : halfedges_around_source(from.t <= 0 ? m_mesh.source(from.h) : m_mesh.target(from.h), m_mesh))
+        if(is_feature(g))
+          starts.push_back(g);
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for(const Halfedge start : starts)
+    {
+      double deviation = 0, length = 0;
+      for(Halfedge g = start; length <= limit;)
+      {
+        if(to_inside ? (g == to.h || g == m_mesh.opposite(to.h)) : m_mesh.target(g) == to_vertex)
+        {
+          best = (std::min)(best, deviation);
+          break;
+        }
+        const Vertex v = m_mesh.target(g);
+        length += segment_length(g);
+        deviation = (std::max)(deviation, distance_to_segment(to_vector(m_mesh.point(v)), a, b));
+        Halfedge next = g;
+        if(m_kind[std::size_t(v)] == Vertex_kind::feature_vertex)
+          for(auto o : halfedges_around_source(v, m_mesh))
+            if(is_feature(o) && o != m_mesh.opposite(g))
+              next = o;
+        if(next == g)
+          break;
+        g = next;
+      }
+    }
+    return best;
+  }
+
 private:
   Vector_3d direction(Halfedge h) const
   {
@@ -251,6 +301,7 @@ private:
   const Mesh& m_mesh;
   const std::vector<char>& m_feature;
   const std::vector<Vertex_kind>& m_kind;
+  double m_line_tolerance = std::numeric_limits<double>::infinity();
 };
 
 } // namespace Graphcut_remeshing

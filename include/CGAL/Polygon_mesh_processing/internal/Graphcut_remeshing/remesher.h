@@ -110,8 +110,13 @@ public:
         for(Vertex u : face_vertices(m_mesh, f))
           m_intersection_frozen[std::size_t(u)] = 1;
     if(m_options.resampling)
+    {
       m_sizing = curvature_sizing(m_reference_mesh, m_reference_feature_edge, mean_edge_length(m_mesh),
                                   m_options.sharp_angle_bounds.second);
+      // The strong creases' turns are not corners then: their lines keep near them as the
+      // surface does.
+      m_polylines.set_line_tolerance(m_sizing.tolerance);
+    }
     else
     {
       m_sizing.mean_length = mean_edge_length(m_mesh);
