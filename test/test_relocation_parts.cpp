@@ -1008,6 +1008,11 @@ TEST(Features, ChordDeviationAlongACrease)
       on_border = v;
   EXPECT_EQ(polylines.chord_deviation(crease(1), polylines.at_vertex(on_border), 100),
             std::numeric_limits<double>::infinity());
+  // The fold is at about 90 degrees, a strong crease (re-sampling holds its slides to the line
+  // tolerance); a border is not.
+  EXPECT_TRUE(polylines.is_strong_crease(crease(1)));
+  EXPECT_TRUE(polylines.is_strong_crease(middle));
+  EXPECT_FALSE(polylines.is_strong_crease(polylines.at_vertex(on_border)));
 }
 
 TEST(Features, SlidingAlongACubeEdge)

@@ -149,6 +149,12 @@ public:
 
   bool is_feature(Halfedge h) const { return m_feature[std::size_t(m_mesh.edge(h))] != 0; }
 
+  // Whether the segment of a location is on a strong crease.
+  bool is_strong_crease(const Location& l) const
+  {
+    return dihedral_angle(m_mesh, m_mesh.edge(l.h)) >= strong_crease_angle;
+  }
+
   // The location of a reference vertex on a feature polyline.
   Location at_vertex(Vertex v) const
   {
