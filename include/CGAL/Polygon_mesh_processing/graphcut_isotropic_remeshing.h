@@ -124,7 +124,9 @@ struct Default_visitor
  *   \cgalParamNEnd
  *   \cgalParamNBegin{graphcut_parameters::lambda_data}
  *     \cgalParamDescription{the weight of the data term (approximate squared distance to the
- *                           input surface, in the unit box)}
+ *                           input surface, in the unit box); with `resampling`, scaled down where
+ *                           the sizing tolerance exceeds 9e-4 of the unit box (see
+ *                           \ref GraphcutRemeshingResampling)}
  *     \cgalParamType{`double`}
  *     \cgalParamDefault{`1e7`}
  *   \cgalParamNEnd

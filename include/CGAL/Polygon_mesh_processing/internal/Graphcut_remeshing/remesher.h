@@ -93,7 +93,10 @@ public:
     : m_mesh(mesh), m_reference_mesh(mesh), m_reference(m_reference_mesh, options.sharp_angle_bounds.first),
       m_reference_feature_edge(std::move(feature_edge)), m_reference_kind(std::move(kind)),
       m_polylines(m_reference_mesh, m_reference_feature_edge, m_reference_kind), m_options(options),
-      m_tracking(m_mesh, m_reference, m_polylines, m_state), m_energy(m_mesh, m_reference, m_state, options.weights),
+      m_sizing(make_sizing(m_reference_mesh, m_reference_feature_edge, options)),
+      m_tracking(m_mesh, m_reference, m_polylines, m_state),
+      m_energy(m_mesh, m_reference, m_state,
+               options.resampling ? resampling_weights(options.weights, m_sizing.tolerance) : options.weights),
       m_candidates(m_mesh, m_reference, m_polylines, m_state, m_energy, options.smoothing_step),
       m_cut(m_mesh, m_energy), m_intersections(mesh)
   {
@@ -109,19 +112,10 @@ public:
       for(Face f : {p.first, p.second})
         for(Vertex u : face_vertices(m_mesh, f))
           m_intersection_frozen[std::size_t(u)] = 1;
+    // With re-sampling the strong creases' turns are not corners: their lines keep near them as
+    // the surface does.
     if(m_options.resampling)
-    {
-      m_sizing = curvature_sizing(m_reference_mesh, m_reference_feature_edge, mean_edge_length(m_mesh),
-                                  m_options.sharp_angle_bounds.second);
-      // The strong creases' turns are not corners then: their lines keep near them as the
-      // surface does.
       m_polylines.set_line_tolerance(m_sizing.tolerance);
-    }
-    else
-    {
-      m_sizing.mean_length = mean_edge_length(m_mesh);
-      m_sizing.tolerance = m_options.sizing_tolerance;
-    }
     m_energy.compute_terms();
   }
 
@@ -290,6 +284,19 @@ public:
 
 
 private:
+  // The target edge lengths of the connectivity stage: a curvature-adapted field when it
+  // re-samples, else the mean length with the user's tolerance for the curved parts.
+  static Sizing make_sizing(const Work_mesh& reference, const std::vector<char>& feature_edge,
+                            const Remeshing_options& options)
+  {
+    if(options.resampling)
+      return curvature_sizing(reference, feature_edge, mean_edge_length(reference), options.sharp_angle_bounds.second);
+    Sizing sizing;
+    sizing.mean_length = mean_edge_length(reference);
+    sizing.tolerance = options.sizing_tolerance;
+    return sizing;
+  }
+
   // The candidates of one relocation, by variable: the vertices with a candidate, in the order of
   // the vertices.
   struct Candidate_set
@@ -411,13 +418,13 @@ private:
   const std::vector<Vertex_kind> m_reference_kind;    // by reference vertex
   Feature_polylines<Work_mesh> m_polylines;
   Remeshing_options m_options;
+  Sizing m_sizing;
   std::size_t m_round = 0; // relocations so far: with the vertex, it seeds the vertex's random numbers
   Tracking_state m_state;  // kinds, y_s0 (its frame gives the tangent plane and rho), hints
   Reference_tracking m_tracking;
   Mesh_energy m_energy;
   Candidate_generator m_candidates;
   Relocation_cut m_cut;
-  Sizing m_sizing;
   std::vector<char> m_intersection_frozen; // by vertex: on a face the input made intersect
   std::vector<CGAL::Bbox_3> m_keep_out;    // regions where connectivity changes made intersections
   Triangle_intersections m_intersections;  // of the working mesh; told when its connectivity changes
