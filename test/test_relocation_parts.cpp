@@ -1015,6 +1015,46 @@ TEST(Features, ChordDeviationAlongACrease)
   EXPECT_FALSE(polylines.is_strong_crease(polylines.at_vertex(on_border)));
 }
 
+// A fold along y = 3 whose dihedral fades from about 70 to 30 degrees along x. With bounds (20,
+// 50), eq. (8) ends the crease where it falls below 50 degrees; followed, it runs on while at 35
+// degrees or more, and no other edge becomes sharp; with no turn allowed, nothing is followed.
+TEST(Features, FadingCreasesAreFollowed)
+{
+  const Work_mesh m = to_work_mesh(make_grid(12, 7, [](std::size_t i, std::size_t j) {
+    const double slope = 0.7 - 0.05 * double(i);
+    return Point(double(i), double(j), slope * std::abs(double(j) - 3));
+  }));
+  auto on_crease = [&](Work_mesh::Edge_index e) {
+    const auto h = m.halfedge(e);
+    return m.point(m.source(h)).y() == 3 && m.point(m.target(h)).y() == 3;
+  };
+  const std::vector<char> plain = GR::detect_sharp_edges(m, 20, 50);
+  const std::vector<char> followed = GR::detect_sharp_edges(m, 20, 50, true);
+  std::size_t fading = 0, weak = 0;
+  for(Work_mesh::Edge_index e : m.edges())
+  {
+    const double theta = GR::dihedral_angle(m, e);
+    if(!on_crease(e))
+    {
+      EXPECT_FALSE(followed[std::size_t(e)]) << theta;
+      continue;
+    }
+    EXPECT_EQ(plain[std::size_t(e)] != 0, theta > 50) << theta;
+    EXPECT_EQ(followed[std::size_t(e)] != 0, theta >= 35) << theta;
+    fading += theta >= 35 && theta <= 50 ? 1 : 0;
+    weak += theta < 35 ? 1 : 0;
+  }
+  EXPECT_GE(fading, 3u);
+  EXPECT_GE(weak, 2u);
+  // The crease runs straight: with no turn allowed, nothing is followed.
+  std::vector<double> theta(m.number_of_edges());
+  for(Work_mesh::Edge_index e : m.edges())
+    theta[std::size_t(e)] = GR::dihedral_angle(m, e);
+  std::vector<char> stiff = plain;
+  GR::follow_fading_creases(m, theta, 35, 0, stiff);
+  EXPECT_EQ(stiff, plain);
+}
+
 TEST(Features, SlidingAlongACubeEdge)
 {
   const int n = 4; // the edge from (0,0,0) to (1,0,0) has four segments of length 0.25

@@ -258,10 +258,11 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
   GR::Work_mesh work;
   copy.make(work, vcm);
   // Re-sampling bounds how far a shortened feature line leaves the removed vertex and keeps a turn
-  // beyond the upper sharp bound; without it, a strong crease keeps every turn of its own.
+  // beyond the upper sharp bound, and follows fading creases; without it, a strong crease keeps
+  // every turn of its own.
   const double crease_turn_angle =
     options.resampling ? options.sharp_angle_bounds.second : GR::strong_crease_turn_angle;
-  auto features = copy.features(work, ecm, options.sharp_angle_bounds, crease_turn_angle);
+  auto features = copy.features(work, ecm, options.sharp_angle_bounds, crease_turn_angle, options.resampling);
   GR::Graphcut_remesher remesher(work, std::move(features.first), std::move(features.second), options);
   Graphcut_remeshing_statistics stats = remesher.run(visitor);
 #ifndef CGAL_NO_POSTCONDITIONS

@@ -74,13 +74,14 @@ public:
   // border edges, and the user's constrained edges (`ecm`), those as
   // Tracking_state::constrained_edge; the kinds of the vertices with them, where a border that
   // turns by more than the upper bound is a corner, and so is a strong crease that turns by more
-  // than `crease_turn_angle` (see classify_vertices()).
+  // than `crease_turn_angle` (see classify_vertices()); with `follow_creases`, fading creases run on
+  // (see detect_sharp_edges()).
   template <typename EdgeConstrainedMap>
   std::pair<std::vector<char>, std::vector<Vertex_kind> > features(const Work_mesh& work, const EdgeConstrainedMap& ecm,
                                                                    const std::pair<double, double>& sharp_bounds,
-                                                                   double crease_turn_angle)
+                                                                   double crease_turn_angle, bool follow_creases)
   {
-    std::vector<char> feature_edge = detect_sharp_edges(work, sharp_bounds.first, sharp_bounds.second);
+    std::vector<char> feature_edge = detect_sharp_edges(work, sharp_bounds.first, sharp_bounds.second, follow_creases);
     for(auto e : work.edges())
       if(work.is_border(e))
         feature_edge[std::size_t(e)] = 1;
