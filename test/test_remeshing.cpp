@@ -354,6 +354,18 @@ TEST(GraphcutRemeshing, PaperModelsBeatTangentialRelaxation)
   }
 }
 
+namespace {
+
+// `input` remeshed with re-sampling at `seed`, the other parameters their defaults.
+Mesh resampled(const Mesh& input, unsigned seed)
+{
+  Mesh m = input;
+  PMP::graphcut_isotropic_remeshing(m, GP::combine(CGAL::parameters::random_seed(seed), GP::resampling(true)));
+  return m;
+}
+
+} // namespace
+
 // Issue 23's bar on fandisk's sharp lines with re-sampling, whose collapses and slides keep the
 // lines within the sizing tolerance of the input's (the strong creases' turns are no corners
 // there): every point of an input edge of 45 degrees or more within 0.1e-3 of the diagonal of an
@@ -366,8 +378,7 @@ TEST(GraphcutRemeshing, ResamplingKeepsFandisksSharpLines)
   const Mesh input = load_sample_mesh("fandisk");
   for(unsigned seed : {0u, 1u})
   {
-    Mesh m = input;
-    PMP::graphcut_isotropic_remeshing(m, GP::combine(CGAL::parameters::random_seed(seed), GP::resampling(true)));
+    const Mesh m = resampled(input, seed);
     EXPECT_LE(PMP::relative_sharp_edge_distance(input, m, 45, 25), 0.1e-3) << "seed " << seed;
     EXPECT_GE(PMP::mesh_quality_report(m).mean_min_angle, 52) << "seed " << seed;
   }
@@ -386,8 +397,7 @@ TEST(GraphcutRemeshing, ResamplingShapesACoarseTube)
   const Mesh input = load_sample_mesh("knot");
   for(unsigned seed : {0u, 1u})
   {
-    Mesh m = input;
-    PMP::graphcut_isotropic_remeshing(m, GP::combine(CGAL::parameters::random_seed(seed), GP::resampling(true)));
+    const Mesh m = resampled(input, seed);
     EXPECT_GE(PMP::mesh_quality_report(m).mean_min_angle, 51.8) << "seed " << seed;
     EXPECT_LE(PMP::relative_surface_distance(input, m).hausdorff, 3.5e-3) << "seed " << seed;
   }

@@ -252,8 +252,7 @@ private:
 
   // Whether v's feature edges stay within the polylines' line tolerance of their polyline with v
   // at `l` (the point `c`), as its neighbours are now, where that is a strong crease: weaker lines
-  // slide freely, as the paper's, since the defaults keep only the strong creases' turns too. A
-  // fixed neighbour never moved: it is the reference vertex of the same index.
+  // slide freely, as the paper's, since the defaults keep only the strong creases' turns too.
   bool keeps_lines(Vertex v, const Location& l, const Vector_3d& c) const
   {
     if(!std::isfinite(m_polylines.line_tolerance()) || !m_polylines.is_strong_crease(l))
@@ -262,8 +261,7 @@ private:
       if(m_state.feature_edge[std::size_t(m_mesh.edge(h))])
       {
         const Vertex n = m_mesh.source(h);
-        const Location at_n = kind_of(n) == Vertex_kind::feature_vertex ? m_state.location[std::size_t(n)]
-                                                                         : m_polylines.at_vertex(n);
+        const Location at_n = line_location(m_state, m_polylines, n);
         if(!(m_polylines.chord_deviation(l, at_n, 2 * (c - position(n)).norm()) <= m_polylines.line_tolerance()))
           return false;
       }

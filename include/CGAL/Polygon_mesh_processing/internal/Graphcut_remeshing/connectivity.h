@@ -897,13 +897,7 @@ private:
     return m_reference.closest_point(x, hint);
   }
 
-  // Where the end v of a sharp edge is on its reference polyline. A fixed end (a corner or a
-  // user's vertex) never moved, so it is the reference vertex of the same index.
-  Location feature_location(Vertex v) const
-  {
-    return m_state.kind[std::size_t(v)] == Vertex_kind::feature_vertex ? m_state.location[std::size_t(v)]
-                                                                       : m_polylines->at_vertex(v);
-  }
+  Location feature_location(Vertex v) const { return line_location(m_state, *m_polylines, v); }
 
   // The point of the reference polyline halfway, along it, from a to b, the ends of a sharp edge.
   Location feature_midpoint(Vertex a, Vertex b) const

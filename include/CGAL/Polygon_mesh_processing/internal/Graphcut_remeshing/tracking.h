@@ -42,6 +42,16 @@ struct Tracking_state
   std::vector<Work_mesh::Face_index> edge_hint; // by edge: nearest reference triangle of its midpoint
 };
 
+// Where a vertex at the end of a feature edge is on its reference polyline. A fixed vertex (a
+// corner or a user's vertex) never moved, so it is the reference vertex of the same index.
+inline Feature_polylines<Work_mesh>::Location line_location(const Tracking_state& state,
+                                                            const Feature_polylines<Work_mesh>& polylines,
+                                                            Work_mesh::Vertex_index v)
+{
+  return state.kind[std::size_t(v)] == Vertex_kind::feature_vertex ? state.location[std::size_t(v)]
+                                                                   : polylines.at_vertex(v);
+}
+
 // Keeps a Tracking_state up to date as the vertices move. Both searches end where they start
 // when they start where they last ended: only the vertices moved since the last update, and the
 // elements with one, are searched.
