@@ -4,7 +4,8 @@
 // benchmark_remeshing [options]: times graphcut_isotropic_remeshing against CGAL's
 // isotropic_remeshing on CGAL's sample meshes and on a large mesh built from bear.off, and prints
 // the median times, the peak resident memory of each run and the quality of the results. With
-// --quality it compares instead the quality of both results, per mesh and seed, against bars.
+// --quality it compares instead the quality of both results, per mesh and seed, against bars; with
+// --length-factors too, both remesh at given multiples of the input's mean edge length.
 
 #include "quality_comparison.h"
 #include "tool_support.h"
@@ -12,7 +13,6 @@
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/graphcut_isotropic_remeshing.h>
 #include <CGAL/Polygon_mesh_processing/mesh_quality_report.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Random.h>
 #include <CGAL/subdivision_method_3.h>
@@ -79,8 +79,8 @@ std::string quality_usage()
   bounds << defaults.first << ' ' << defaults.second;
   return "\n"
          "usage: benchmark_remeshing --quality [--meshes LIST] [--seeds LIST] [--resampling]\n"
-         "                                     [--sharp-angle LOW HIGH] [--data DIR]\n"
-         "                                     [--json FILE]\n"
+         "                                     [--sharp-angle LOW HIGH] [--length-factors LIST]\n"
+         "                                     [--data DIR] [--json FILE]\n"
          "\n"
          "Compares the quality of graphcut_isotropic_remeshing (defaults, each seed) with that of CGAL's\n"
          "isotropic_remeshing (as above, run once a mesh): a row per mesh and seed with the vertex\n"
@@ -102,9 +102,17 @@ std::string quality_usage()
          "  --sharp-angle LOW HIGH  our remesher's sharp-edge hysteresis bounds, degrees (default " +
          bounds.str() +
          ")\n"
+         "  --length-factors LIST   comma-separated positive factors f: both remeshers aim at f times\n"
+         "                          the input's mean edge length, ours through\n"
+         "                          graphcut_isotropic_remeshing(faces(mesh), target, mesh, np)\n"
+         "                          (re-sampling on, whatever --resampling says), CGAL's once a mesh\n"
+         "                          and factor; a row per mesh, factor and seed, with a column L/mean,\n"
+         "                          and the density bar becomes |V ours - V cgal| <= 0.15 times cgal's\n"
+         "                          (default none: ours without a target, as above)\n"
          "  --data DIR              as above\n"
          "  --json FILE             also write the rows as JSON (distances there are plain ratios\n"
-         "                          to the diagonal, not x1e-3)\n";
+         "                          to the diagonal, not x1e-3; with --length-factors each row has\n"
+         "                          its \"length_factor\")\n";
 }
 
 std::string usage()
@@ -257,14 +265,6 @@ Machine describe_machine()
 // ---------------------------------------------------------------------------------------------
 // Meshes
 
-double mean_edge_length(const Mesh& mesh)
-{
-  double sum = 0;
-  for(auto e : edges(mesh))
-    sum += PMP::edge_length(halfedge(e, mesh), mesh);
-  return num_edges(mesh) == 0 ? 0 : sum / double(num_edges(mesh));
-}
-
 // Moves every vertex in the tangent plane of its area-weighted normal by a random vector no longer
 // than a quarter of its shortest incident edge. The displacements all come from the unmoved
 // positions, so the result does not depend on the order of the vertices.
@@ -405,16 +405,22 @@ double run_ours(Mesh& mesh)
   return seconds_since(start);
 }
 
-double run_cgal(Mesh& mesh)
+// CGAL's remeshing aiming at `target`, in the mesh's units.
+double run_cgal_at(Mesh& mesh, double target)
 {
-  // The target length and the constrained edges are set up outside the timed part.
-  const double target = mean_edge_length(mesh);
+  // The constrained edges are set up outside the timed part.
   auto ecm = mesh.add_property_map<Mesh::Edge_index, bool>("e:is_constrained", false).first;
   PMP::detect_sharp_edges(mesh, cgal_sharp_angle, ecm);
   const auto start = std::chrono::steady_clock::now();
   PMP::isotropic_remeshing(faces(mesh), target, mesh,
                            CGAL::parameters::number_of_iterations(cgal_iterations).edge_is_constrained_map(ecm));
   return seconds_since(start);
+}
+
+double run_cgal(Mesh& mesh)
+{
+  // The target length is computed outside the timed part.
+  return run_cgal_at(mesh, tools::mean_edge_length(mesh));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -590,6 +596,20 @@ bool parse_seeds(const std::string& list, std::vector<unsigned int>& seeds)
   return !seeds.empty();
 }
 
+// Positive finite numbers only: a factor of 0 would ask for edges of no length.
+bool parse_factors(const std::string& list, std::vector<double>& factors)
+{
+  factors.clear();
+  for(const auto& item : split(list))
+  {
+    double value = 0;
+    if(!tools::parse_number(item, value) || !(value > 0))
+      return false;
+    factors.push_back(value);
+  }
+  return !factors.empty();
+}
+
 bool parse_count(const std::string& text, std::size_t& value)
 {
   if(text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 9)
@@ -619,7 +639,7 @@ int run_quality_mode(const tools::Quality_options& options, const std::string& j
   std::string error;
   try
   {
-    tools::run_quality_comparison(options, run_cgal, rows);
+    tools::run_quality_comparison(options, run_cgal_at, rows);
   }
   catch(const tools::Input_error& e)
   {
@@ -656,7 +676,7 @@ int main(int argc, char** argv)
   // The two modes take different mesh names, so --meshes is checked once the mode is known.
   bool quality = false, resampling = false;
   std::optional<std::pair<double, double>> sharp_angle_bounds;
-  std::optional<std::string> mesh_list, seed_list;
+  std::optional<std::string> mesh_list, seed_list, length_factor_list;
   std::vector<std::string> timing_only; // options of the timing mode given, refused with --quality
   for(int i = 1; i < argc; ++i)
   {
@@ -679,6 +699,8 @@ int main(int argc, char** argv)
       seed_list = value();
     else if(arg == "--resampling")
       resampling = true;
+    else if(arg == "--length-factors")
+      length_factor_list = value();
     else if(arg == "--sharp-angle")
     {
       const std::string low = value(), high = value();
@@ -742,10 +764,15 @@ int main(int argc, char** argv)
     options.resampling = resampling;
     if(sharp_angle_bounds)
       options.sharp_angle_bounds = *sharp_angle_bounds;
+    if(length_factor_list && !parse_factors(*length_factor_list, options.length_factors))
+      fail("--length-factors needs a comma-separated list of positive numbers");
     return run_quality_mode(options, json_file);
   }
-  if(seed_list || resampling || sharp_angle_bounds)
-    fail(std::string(seed_list ? "--seeds" : resampling ? "--resampling" : "--sharp-angle") +
+  if(seed_list || resampling || sharp_angle_bounds || length_factor_list)
+    fail(std::string(seed_list             ? "--seeds"
+                     : resampling          ? "--resampling"
+                     : sharp_angle_bounds  ? "--sharp-angle"
+                                           : "--length-factors") +
          " applies to --quality only");
   if(mesh_list)
   {

@@ -61,6 +61,9 @@ std::string usage()
          "                          the connectivity is optimised)\n"
       << "  --sharp-angle LOW HIGH  the dihedral angles (degrees) of the sharp-edge hysteresis (default "
       << defaults.sharp_angle_bounds.first << " " << defaults.sharp_angle_bounds.second << ")\n"
+      << "  --target-length L       re-sample the surface to edges of about L (the input's units),\n"
+      << "                          shorter where it is curved (default: the input's mean edge length,\n"
+      << "                          without re-sampling unless --resampling)\n"
       << "  --resampling            re-sample the surface to a curvature-adapted sizing field in the\n"
       << "                          connectivity passes (default: " << (defaults.resampling ? "on" : "off") << ")\n"
          "  --quiet                 print nothing but errors, no progress bar (default: off)\n"
@@ -160,7 +163,7 @@ int main(int argc, char** argv)
 {
   // What the user gives; the rest is left to the library's defaults.
   std::optional<std::size_t> iterations, greedy_iterations;
-  std::optional<double> lambda_data, face_data_weight;
+  std::optional<double> lambda_data, face_data_weight, target_length;
   std::optional<unsigned int> seed;
   bool quiet = false, connectivity = true;
   bool resampling = GR::Remeshing_options().resampling;
@@ -192,6 +195,15 @@ int main(int argc, char** argv)
     else if(arg == "--seed") value(seed);
     else if(arg == "--no-connectivity") connectivity = false;
     else if(arg == "--resampling") resampling = true;
+    else if(arg == "--target-length")
+    {
+      value(target_length);
+      if(!(*target_length > 0))
+      {
+        std::cerr << "graphcut_remesh: --target-length needs a positive length\n";
+        return EXIT_FAILURE;
+      }
+    }
     else if(arg == "--sharp-angle")
     {
       value(sharp_low);
@@ -253,17 +265,21 @@ int main(int argc, char** argv)
       GP::do_connectivity_optimization(connectivity), GP::resampling(resampling),
       GP::sharp_angle_bounds(std::make_pair(sharp_low.value_or(defaults.sharp_angle_bounds.first),
                                             sharp_high.value_or(defaults.sharp_angle_bounds.second))));
+    // The call with a target length, as isotropic_remeshing's, or the one without.
+    auto remesh = [&](const auto& np) {
+      return target_length ? PMP::graphcut_isotropic_remeshing(faces(mesh), *target_length, mesh, np)
+                           : PMP::graphcut_isotropic_remeshing(mesh, np);
+    };
     PMP::Graphcut_remeshing_statistics stats;
     if(!quiet && stderr_is_terminal())
     {
       Progress_bar bar(iterations.value_or(defaults.number_of_iterations),
                        greedy_iterations.value_or(defaults.number_of_greedy_iterations));
       // The visitor is copied: it refers to the bar, which clears its line when it goes.
-      stats = PMP::graphcut_isotropic_remeshing(
-        mesh, GP::combine(parameters, GP::visitor([&bar](const PMP::Graphcut_remeshing_progress& p) { return bar(p); })));
+      stats = remesh(GP::combine(parameters, GP::visitor([&bar](const PMP::Graphcut_remeshing_progress& p) { return bar(p); })));
     }
     else
-      stats = PMP::graphcut_isotropic_remeshing(mesh, parameters);
+      stats = remesh(parameters);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     if(!CGAL::IO::write_polygon_mesh(files[1], mesh, CGAL::parameters::stream_precision(17)))
@@ -288,7 +304,10 @@ int main(int argc, char** argv)
       tools::write_json(out, after);
       out << ", \"distance\": ";
       tools::write_json(out, distance);
-      out << ", \"seconds\": " << tools::json_number(seconds) << ", \"energy\": [";
+      out << ", \"seconds\": " << tools::json_number(seconds);
+      if(target_length)
+        out << ", \"target_edge_length\": " << tools::json_number(*target_length);
+      out << ", \"energy\": [";
       for(std::size_t i = 0; i < stats.energies.size(); ++i)
         out << (i ? ", " : "") << std::setprecision(17) << stats.energies[i];
       out << "], \"connectivity_passes\": [";

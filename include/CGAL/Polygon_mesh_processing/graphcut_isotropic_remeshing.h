@@ -17,6 +17,7 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -30,6 +31,97 @@ struct Default_visitor
 {
   bool operator()(const Graphcut_remeshing_progress&) const { return true; }
 };
+
+// Named parameters to plain values; a parameter not given keeps the default of
+// Remeshing_options, where the defaults are written.
+template <typename NamedParameters>
+Remeshing_options remeshing_options(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  namespace GNP = graphcut_internal_np;
+  const Remeshing_options defaults;
+  Remeshing_options options;
+  options.number_of_iterations =
+    choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults.number_of_iterations);
+  options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), defaults.random_seed);
+  options.weights.lambda_shape = choose_parameter(get_parameter(np, GNP::lambda_shape), defaults.weights.lambda_shape);
+  options.weights.lambda_data = choose_parameter(get_parameter(np, GNP::lambda_data), defaults.weights.lambda_data);
+  options.weights.face_data_weight =
+    choose_parameter(get_parameter(np, GNP::face_data_weight), defaults.weights.face_data_weight);
+  options.number_of_greedy_iterations =
+    choose_parameter(get_parameter(np, GNP::number_of_greedy_iterations), defaults.number_of_greedy_iterations);
+  options.initial_temperature =
+    choose_parameter(get_parameter(np, GNP::initial_temperature), defaults.initial_temperature);
+  options.cooling_factor = choose_parameter(get_parameter(np, GNP::cooling_factor), defaults.cooling_factor);
+  options.smoothing_step = choose_parameter(get_parameter(np, GNP::smoothing_step), defaults.smoothing_step);
+  options.do_connectivity_optimization =
+    choose_parameter(get_parameter(np, GNP::do_connectivity_optimization), defaults.do_connectivity_optimization);
+  options.connectivity_period =
+    choose_parameter(get_parameter(np, GNP::connectivity_period), defaults.connectivity_period);
+  options.sharp_angle_bounds =
+    choose_parameter(get_parameter(np, GNP::sharp_angle_bounds), defaults.sharp_angle_bounds);
+  options.resampling = choose_parameter(get_parameter(np, GNP::resampling), defaults.resampling);
+  return options;
+}
+
+// Both calls: remeshes the faces `region` of `tmesh` (`in_region(f)` tells them), to
+// `target_edge_length` (the mesh's units) when it is positive, else as the options say.
+template <typename TriangleMesh, typename InRegion, typename NamedParameters>
+Graphcut_remeshing_statistics
+remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> region,
+       const InRegion& in_region, double target_edge_length, const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using edge_descriptor = typename boost::graph_traits<TriangleMesh>::edge_descriptor;
+
+  const Graphcut_remeshing_input_validation validation = validate_graphcut_remeshing_input(tmesh, np);
+  if(!validation.is_valid())
+    throw Graphcut_remeshing_input_error(validation);
+
+  Remeshing_options options = remeshing_options(np);
+  auto visitor = choose_parameter(get_parameter(np, graphcut_internal_np::visitor), Default_visitor());
+  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, tmesh));
+  auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
+                              Static_boolean_property_map<edge_descriptor, false>());
+  auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
+                              Static_boolean_property_map<vertex_descriptor, false>());
+  using GT = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
+  const GT gt = choose_parameter<GT>(get_parameter(np, internal_np::geom_traits));
+  const auto vertex_index = CGAL::get_initialized_vertex_index_map(tmesh, np);
+
+  Working_copy<TriangleMesh, decltype(vpm), decltype(vertex_index), typename GT::Construct_point_3> copy(
+    tmesh, vpm, vertex_index, gt.construct_point_3_object());
+  Work_mesh work;
+  copy.make(work, vcm, std::move(region), in_region);
+  if(target_edge_length > 0)
+  {
+    // A density asked for: only re-sampling reaches it.
+    options.resampling = true;
+    options.target_edge_length = copy.to_unit_length(target_edge_length);
+  }
+  // Re-sampling bounds how far a shortened feature line leaves the removed vertex and keeps a turn
+  // beyond the upper sharp bound, and follows fading creases; without it, a strong crease keeps
+  // every turn of its own.
+  const double crease_turn_angle = options.resampling ? options.sharp_angle_bounds.second : strong_crease_turn_angle;
+  auto features = copy.features(work, ecm, options.sharp_angle_bounds, crease_turn_angle, options.resampling);
+  Graphcut_remesher remesher(work, std::move(features.first), std::move(features.second), options);
+  Graphcut_remeshing_statistics stats = remesher.run(visitor);
+#ifndef CGAL_NO_POSTCONDITIONS
+  {
+    // Debug builds: what the method promises, after every run, cancelled or not.
+    const std::string broken = remesher.broken_guarantee();
+    CGAL_postcondition_msg(broken.empty(), broken.c_str());
+  }
+#endif
+  if(stats.number_of_flips + stats.number_of_splits + stats.number_of_collapses + stats.number_of_vertex_splits == 0)
+    copy.copy_positions_back(work);
+  else
+    copy.copy_mesh_back(work, ecm, vcm);
+  return stats;
+}
 
 } // namespace Graphcut_remeshing
 } // namespace internal
@@ -206,77 +298,67 @@ Graphcut_remeshing_statistics
 graphcut_isotropic_remeshing(TriangleMesh& tmesh,
                              const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using parameters::is_default_parameter;
-  namespace GR = internal::Graphcut_remeshing;
-  namespace GNP = graphcut_internal_np;
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using edge_descriptor = typename boost::graph_traits<TriangleMesh>::edge_descriptor;
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> all(faces(tmesh).begin(), faces(tmesh).end());
+  return internal::Graphcut_remeshing::remesh(tmesh, std::move(all), [](const auto&) { return true; }, 0., np);
+}
 
-  const Graphcut_remeshing_input_validation validation = validate_graphcut_remeshing_input(tmesh, np);
-  if(!validation.is_valid())
-    throw Graphcut_remeshing_input_error(validation);
-
-  // Named parameters to plain values; a parameter not given keeps the default of
-  // Remeshing_options, where the defaults are written.
-  const GR::Remeshing_options defaults;
-  GR::Remeshing_options options;
-  options.number_of_iterations =
-    choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults.number_of_iterations);
-  options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), defaults.random_seed);
-  options.weights.lambda_shape = choose_parameter(get_parameter(np, GNP::lambda_shape), defaults.weights.lambda_shape);
-  options.weights.lambda_data = choose_parameter(get_parameter(np, GNP::lambda_data), defaults.weights.lambda_data);
-  options.weights.face_data_weight =
-    choose_parameter(get_parameter(np, GNP::face_data_weight), defaults.weights.face_data_weight);
-  options.number_of_greedy_iterations =
-    choose_parameter(get_parameter(np, GNP::number_of_greedy_iterations), defaults.number_of_greedy_iterations);
-  options.initial_temperature =
-    choose_parameter(get_parameter(np, GNP::initial_temperature), defaults.initial_temperature);
-  options.cooling_factor = choose_parameter(get_parameter(np, GNP::cooling_factor), defaults.cooling_factor);
-  options.smoothing_step = choose_parameter(get_parameter(np, GNP::smoothing_step), defaults.smoothing_step);
-  options.do_connectivity_optimization =
-    choose_parameter(get_parameter(np, GNP::do_connectivity_optimization), defaults.do_connectivity_optimization);
-  options.connectivity_period =
-    choose_parameter(get_parameter(np, GNP::connectivity_period), defaults.connectivity_period);
-  options.sharp_angle_bounds =
-    choose_parameter(get_parameter(np, GNP::sharp_angle_bounds), defaults.sharp_angle_bounds);
-  options.resampling = choose_parameter(get_parameter(np, GNP::resampling), defaults.resampling);
-  auto visitor = choose_parameter(get_parameter(np, GNP::visitor), GR::Default_visitor());
-
-  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, tmesh));
-  auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
-                              Static_boolean_property_map<edge_descriptor, false>());
-  auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
-                              Static_boolean_property_map<vertex_descriptor, false>());
-  using GT = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
-  const GT gt = choose_parameter<GT>(get_parameter(np, internal_np::geom_traits));
-  const auto vertex_index = CGAL::get_initialized_vertex_index_map(tmesh, np);
-
-  GR::Working_copy<TriangleMesh, decltype(vpm), decltype(vertex_index), typename GT::Construct_point_3> copy(
-    tmesh, vpm, vertex_index, gt.construct_point_3_object());
-  GR::Work_mesh work;
-  copy.make(work, vcm);
-  // Re-sampling bounds how far a shortened feature line leaves the removed vertex and keeps a turn
-  // beyond the upper sharp bound, and follows fading creases; without it, a strong crease keeps
-  // every turn of its own.
-  const double crease_turn_angle =
-    options.resampling ? options.sharp_angle_bounds.second : GR::strong_crease_turn_angle;
-  auto features = copy.features(work, ecm, options.sharp_angle_bounds, crease_turn_angle, options.resampling);
-  GR::Graphcut_remesher remesher(work, std::move(features.first), std::move(features.second), options);
-  Graphcut_remeshing_statistics stats = remesher.run(visitor);
-#ifndef CGAL_NO_POSTCONDITIONS
-  {
-    // Debug builds: what the method promises, after every run, cancelled or not.
-    const std::string broken = remesher.broken_guarantee();
-    CGAL_postcondition_msg(broken.empty(), broken.c_str());
-  }
-#endif
-  if(stats.number_of_flips + stats.number_of_splits + stats.number_of_collapses + stats.number_of_vertex_splits == 0)
-    copy.copy_positions_back(work);
-  else
-    copy.copy_mesh_back(work, ecm, vcm);
-  return stats;
+/*!
+ * \ingroup PkgGraphcutRemeshingRef
+ *
+ * remeshes the faces `face_range` of `tmesh` as `graphcut_isotropic_remeshing(tmesh, np)` does,
+ * at the density `target_edge_length` asks for: the call is shaped as CGAL's
+ * `isotropic_remeshing(faces, target_edge_length, pmesh, np)`. The connectivity passes re-sample the
+ * surface (`graphcut_parameters::resampling` is on) to a sizing field around `target_edge_length`:
+ * shorter where the surface is curved, longer where it is flat, graded, and asking for as many
+ * triangles as `target_edge_length` would everywhere; feature lines and borders are re-sampled too.
+ *
+ * Where the faces of `face_range` meet the rest of `tmesh`, the seam, its vertices and edges stay
+ * as they are (as if constrained); no vertex or face outside the range changes. The seam's edges
+ * keep their `edge_is_constrained_map` values.
+ *
+ * @tparam FaceRange a range of `boost::graph_traits<TriangleMesh>::%face_descriptor`
+ * @tparam TriangleMesh as for `graphcut_isotropic_remeshing(tmesh, np)`
+ * @tparam NamedParameters as for `graphcut_isotropic_remeshing(tmesh, np)`
+ *
+ * @param face_range the faces to remesh (each once)
+ * @param target_edge_length the edge length aimed at, in the units of `tmesh`'s points; positive
+ * @param tmesh a triangle mesh, remeshed in place
+ * @param np the named parameters of `graphcut_isotropic_remeshing(tmesh, np)`, and
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{face_index_map}
+ *     \cgalParamDescription{a property map associating to each face of `tmesh` a unique index between
+ *                           `0` and `num_faces(tmesh) - 1`}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+ *                    as key type and `std::size_t` as value type}
+ *     \cgalParamDefault{an automatically indexed internal map}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \return the energies before and after each iteration, and counts
+ *
+ * \throws Graphcut_remeshing_input_error as `graphcut_isotropic_remeshing(tmesh, np)` (the whole of
+ *         `tmesh` is validated); `tmesh` is then left untouched
+ */
+template <typename FaceRange, typename TriangleMesh,
+          typename NamedParameters = parameters::Default_named_parameters>
+Graphcut_remeshing_statistics
+graphcut_isotropic_remeshing(const FaceRange& face_range, const double target_edge_length, TriangleMesh& tmesh,
+                             const NamedParameters& np = parameters::default_values())
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  CGAL_precondition(target_edge_length > 0);
+  const auto face_index = CGAL::get_initialized_face_index_map(tmesh, np);
+  std::vector<char> in_range(num_faces(tmesh), 0);
+  for(face_descriptor f : face_range)
+    in_range[get(face_index, f)] = 1;
+  std::vector<face_descriptor> region;
+  for(face_descriptor f : faces(tmesh))
+    if(in_range[get(face_index, f)])
+      region.push_back(f);
+  return internal::Graphcut_remeshing::remesh(
+    tmesh, std::move(region), [&](face_descriptor f) { return in_range[get(face_index, f)] != 0; },
+    target_edge_length, np);
 }
 
 } // namespace Polygon_mesh_processing

@@ -435,7 +435,7 @@ public:
       if(!(turn > best) || (pk - px).norm() > 4.0 / 3.0 * edge_length_target(k, x))
         continue;
       if(!(m_polylines->chord_deviation(feature_location(k), feature_location(x), 2 * (pk - px).norm()) <=
-           m_sizing.tolerance))
+           tolerance_for((pk - px).norm(), edge_length_target(k, x))))
         continue;
       best = turn;
       found = true;
@@ -471,9 +471,10 @@ public:
         if(p == c.removed || p == c.kept || q == c.removed || q == c.kept)
           continue; // one of the triangles that disappear
         const Vector_3d pp = position(p), pq = position(q);
-        if(!acceptable(c.point, pq, pp, u, area_vector(position(u), pq, pp)) ||
-           distance_to_reference((c.point + pp + pq) / 3, c.kept) > m_sizing.tolerance ||
-           (c.point - pp).norm() > 4.0 / 3.0 * edge_length_target(c.kept, p))
+        const double target = edge_length_target(c.kept, p);
+        const double longest = (std::max)({(c.point - pp).norm(), (c.point - pq).norm(), (pp - pq).norm()});
+        if((c.point - pp).norm() > 4.0 / 3.0 * target || !acceptable(c.point, pq, pp, u, area_vector(position(u), pq, pp)) ||
+           distance_to_reference((c.point + pp + pq) / 3, c.kept) > tolerance_for(longest, target))
           return -1;
         smallest = (std::min)(smallest, smallest_angle(c.point, pq, pp));
       }
@@ -908,6 +909,18 @@ private:
   double distance_to_reference(const Vector_3d& x, Vertex near) const
   {
     return (x - project(x, near)).norm();
+  }
+
+  // How far a triangle or a chord whose longest side is `length` may leave the reference where
+  // the target is `target`: the sizing tolerance, how far a triangle of the target length does.
+  // When the user asked for the length, a triangle longer than its target (up to 4/3 of it: a
+  // coarsening collapse makes such triangles) may leave it as far as its length implies, the
+  // sagitta growing as the length squared; else the curved parts keep the short edges that make
+  // the fit.
+  double tolerance_for(double length, double target) const
+  {
+    const double ratio = length / target;
+    return m_sizing.target_asked_for ? m_sizing.tolerance * (std::max)(1.0, ratio * ratio) : m_sizing.tolerance;
   }
 
   double edge_length_target(Vertex a, Vertex b) const

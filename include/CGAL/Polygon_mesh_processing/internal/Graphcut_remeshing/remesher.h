@@ -77,6 +77,8 @@ struct Remeshing_options
   // field (sizing.h's curvature_sizing()), collapsing and splitting also where it is curved and
   // along feature lines and borders.
   bool resampling = false;
+  // The edge length the re-sampling aims at (unit box), or 0 for the input's mean edge length.
+  double target_edge_length = 0;
 };
 
 class Graphcut_remesher
@@ -94,6 +96,7 @@ public:
       m_reference_feature_edge(std::move(feature_edge)), m_reference_kind(std::move(kind)),
       m_polylines(m_reference_mesh, m_reference_feature_edge, m_reference_kind), m_options(options),
       m_sizing(make_sizing(m_reference_mesh, m_reference_feature_edge, options)),
+      m_input_mean_length(mean_edge_length(m_reference_mesh)),
       m_tracking(m_mesh, m_reference, m_polylines, m_state),
       m_energy(m_mesh, m_reference, m_state,
                options.resampling ? resampling_weights(options.weights, m_sizing.tolerance) : options.weights),
@@ -284,15 +287,21 @@ public:
 
 
 private:
-  // The target edge lengths of the connectivity stage: a curvature-adapted field when it
-  // re-samples, else the mean length with the user's tolerance for the curved parts.
+  // The target edge lengths of the connectivity stage: a curvature-adapted field around the
+  // target (or mean) length when it re-samples, else that length with the user's tolerance for
+  // the curved parts.
   static Sizing make_sizing(const Work_mesh& reference, const std::vector<char>& feature_edge,
                             const Remeshing_options& options)
   {
+    const double length = options.target_edge_length > 0 ? options.target_edge_length : mean_edge_length(reference);
     if(options.resampling)
-      return curvature_sizing(reference, feature_edge, mean_edge_length(reference), options.sharp_angle_bounds.second);
+    {
+      Sizing sizing = curvature_sizing(reference, feature_edge, length, options.sharp_angle_bounds.second);
+      sizing.target_asked_for = options.target_edge_length > 0;
+      return sizing;
+    }
     Sizing sizing;
-    sizing.mean_length = mean_edge_length(reference);
+    sizing.mean_length = length;
     sizing.tolerance = options.sizing_tolerance;
     return sizing;
   }
@@ -401,13 +410,15 @@ private:
     return fresh;
   }
 
-  // The region a connectivity pass leaves alone around a triangle it made intersect.
+  // The region a connectivity pass leaves alone around a triangle it made intersect: the
+  // triangle's box grown by twice the input's mean edge length (not the target's, which a coarse
+  // target makes large enough to freeze a coarsening).
   CGAL::Bbox_3 keep_out_box(Face f) const
   {
     CGAL::Bbox_3 b;
     for(Vertex u : face_vertices(m_mesh, f))
       b += m_mesh.point(u).bbox();
-    const double r = 2 * m_sizing.mean_length;
+    const double r = 2 * m_input_mean_length;
     return CGAL::Bbox_3(b.xmin() - r, b.ymin() - r, b.zmin() - r, b.xmax() + r, b.ymax() + r, b.zmax() + r);
   }
 
@@ -419,6 +430,7 @@ private:
   Feature_polylines<Work_mesh> m_polylines;
   Remeshing_options m_options;
   Sizing m_sizing;
+  double m_input_mean_length;
   std::size_t m_round = 0; // relocations so far: with the vertex, it seeds the vertex's random numbers
   Tracking_state m_state;  // kinds, y_s0 (its frame gives the tangent plane and rho), hints
   Reference_tracking m_tracking;

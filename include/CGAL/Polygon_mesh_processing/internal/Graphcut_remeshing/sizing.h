@@ -41,6 +41,9 @@ struct Sizing
   // with `target`, by curvature_sizing(); read only when re-sampling.
   double corner_angle = 0;
   std::vector<double> target; // by reference vertex; empty: the length comes from the frames
+  // The user asked for the length (not the input's mean): the density comes first, see
+  // Connectivity_optimizer::tolerance_for().
+  bool target_asked_for = false;
 
   bool resamples() const { return !target.empty(); }
 

@@ -20,6 +20,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
+#include <CGAL/use.h>
 
 #include <algorithm>
 #include <array>
@@ -39,7 +40,9 @@ template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMa
 class Working_copy
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   using edge_descriptor = typename boost::graph_traits<TriangleMesh>::edge_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using Point = typename boost::property_traits<VertexPointMap>::value_type;
   using Work_vertex = Work_mesh::Vertex_index;
 
@@ -48,27 +51,47 @@ public:
     : m_tmesh(tmesh), m_vpm(vpm), m_vertex_index(vertex_index), m_construct_point(construct_point)
   {}
 
-  // The working copy, scaled into the unit box. Its vertices follow a Hilbert curve and its faces
-  // their first vertex: neighbours on the surface are then near in memory, which keeps the cost
-  // per vertex of an iteration flat on large meshes. `vcm` tells the user's fixed vertices.
-  template <typename VertexConstrainedMap>
-  void make(Work_mesh& work, const VertexConstrainedMap& vcm)
+  // The working copy of the faces `region` (`in_region(f)` tells whether f is one of them),
+  // scaled into the unit box. Its vertices follow a Hilbert curve and its faces their first
+  // vertex: neighbours on the surface are then near in memory, which keeps the cost per vertex of
+  // an iteration flat on large meshes. `vcm` tells the user's fixed vertices. Where the region
+  // meets the rest of the mesh, the seam, its vertices are fixed and its edges constrained, so
+  // that the rest stays as it is.
+  template <typename VertexConstrainedMap, typename InRegion>
+  void make(Work_mesh& work, const VertexConstrainedMap& vcm, std::vector<face_descriptor> region,
+            const InRegion& in_region)
   {
-    m_input_vertices.reserve(num_vertices(m_tmesh));
-    m_input_points.reserve(num_vertices(m_tmesh));
+    m_region = std::move(region);
+    // (num_faces() would also count the faces a Surface_mesh keeps as removed.)
+    m_whole = m_region.size() == std::size_t(std::distance(faces(m_tmesh).begin(), faces(m_tmesh).end()));
+    std::vector<char> used(num_vertices(m_tmesh), 0), outside(num_vertices(m_tmesh), 0);
+    for(face_descriptor f : faces(m_tmesh))
+      for(vertex_descriptor v : vertices_around_face(halfedge(f, m_tmesh), m_tmesh))
+        (in_region(f) ? used : outside)[get(m_vertex_index, v)] = 1;
     for(vertex_descriptor v : vertices(m_tmesh))
-    {
-      m_input_vertices.push_back(v);
-      m_input_points.push_back(to_vector(get(m_vpm, v)));
-    }
+      if(used[get(m_vertex_index, v)])
+      {
+        m_input_vertices.push_back(v);
+        m_input_points.push_back(to_vector(get(m_vpm, v)));
+      }
     m_normalization = Unit_box_normalization(m_input_points);
-    work.reserve(static_cast<Work_mesh::size_type>(num_vertices(m_tmesh)),
-                 static_cast<Work_mesh::size_type>(num_edges(m_tmesh)),
-                 static_cast<Work_mesh::size_type>(num_faces(m_tmesh)));
-    m_work_vertex.resize(m_input_vertices.size());
-    add_vertices(work, vcm);
+    work.reserve(static_cast<Work_mesh::size_type>(m_input_vertices.size()),
+                 static_cast<Work_mesh::size_type>(3 * m_region.size() / 2 + m_input_vertices.size()),
+                 static_cast<Work_mesh::size_type>(m_region.size()));
+    m_work_vertex.resize(num_vertices(m_tmesh));
+    add_vertices(work, vcm, outside);
     add_faces(work);
+    for(face_descriptor f : m_region)
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, m_tmesh), m_tmesh))
+      {
+        const face_descriptor g = face(opposite(h, m_tmesh), m_tmesh);
+        if(g != boost::graph_traits<TriangleMesh>::null_face() && !in_region(g))
+          m_seam_edges.emplace_back(to_work(source(h, m_tmesh)), to_work(target(h, m_tmesh)));
+      }
   }
+
+  // A length of the mesh's units in the unit box.
+  double to_unit_length(double length) const { return length * m_normalization.scale(); }
 
   // By edge of the working copy: the sharp edges of eq. (8) (hysteresis bounds in degrees),
   // border edges, and the user's constrained edges (`ecm`), those as
@@ -86,14 +109,16 @@ public:
       if(work.is_border(e))
         feature_edge[std::size_t(e)] = 1;
     m_user_edge.assign(feature_edge.size(), 0);
-    for(edge_descriptor e : edges(m_tmesh))
-      if(get(ecm, e))
-      {
-        const auto h = halfedge(e, m_tmesh);
-        const auto wh = work.halfedge(to_work(source(h, m_tmesh)), to_work(target(h, m_tmesh)));
-        feature_edge[std::size_t(work.edge(wh))] = Tracking_state::constrained_edge;
-        m_user_edge[std::size_t(work.edge(wh))] = 1;
-      }
+    for(const auto& seam : m_seam_edges)
+      feature_edge[std::size_t(work.edge(work.halfedge(seam.first, seam.second)))] = Tracking_state::constrained_edge;
+    for(face_descriptor f : m_region)
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, m_tmesh), m_tmesh))
+        if(get(ecm, edge(h, m_tmesh)))
+        {
+          const auto wh = work.halfedge(to_work(source(h, m_tmesh)), to_work(target(h, m_tmesh)));
+          feature_edge[std::size_t(work.edge(wh))] = Tracking_state::constrained_edge;
+          m_user_edge[std::size_t(work.edge(wh))] = 1;
+        }
     std::vector<Vertex_kind> kind =
       classify_vertices(work, feature_edge, m_constrained_vertex, sharp_bounds.second, crease_turn_angle);
     return {std::move(feature_edge), std::move(kind)};
@@ -113,11 +138,10 @@ public:
     }
   }
 
-  // New connectivity: `tmesh` is emptied element by element (so that the property maps of its
-  // owner stay alive) and receives the working mesh (changed to the input's scale) with the
-  // constrained maps updated. Feature and fixed vertices are never removed, so a working vertex of
-  // an input index still at its input position is that input vertex, and keeps its exact
-  // coordinates.
+  // New connectivity: the region's faces of `tmesh` are replaced by the working mesh's (changed
+  // to the input's scale), with the constrained maps updated. Feature and fixed vertices are never
+  // removed, so a working vertex of an input index still at its input position is that input
+  // vertex, and keeps its exact coordinates.
   template <typename EdgeConstrainedMap, typename VertexConstrainedMap>
   void copy_mesh_back(Work_mesh& work, EdgeConstrainedMap& ecm, VertexConstrainedMap& vcm)
   {
@@ -137,12 +161,23 @@ public:
       const Vector_3d p = m_normalization.from_unit(to_vector(work.point(w)));
       work.point(w) = Work_kernel::Point_3(p.x(), p.y(), p.z());
     }
-    std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> old_faces(faces(m_tmesh).begin(),
-                                                                                     faces(m_tmesh).end());
-    for(auto f : old_faces)
+    if(m_whole)
+      copy_whole_back(work, exact, is_exact, ecm, vcm);
+    else
+      replace_region(work, exact, is_exact, ecm, vcm);
+  }
+
+private:
+  // The whole mesh: `tmesh` is emptied element by element (so that the property maps of its owner
+  // stay alive) and receives the working mesh.
+  template <typename EdgeConstrainedMap, typename VertexConstrainedMap>
+  void copy_whole_back(const Work_mesh& work, const std::vector<Point>& exact, const std::vector<char>& is_exact,
+                       EdgeConstrainedMap& ecm, VertexConstrainedMap& vcm)
+  {
+    for(face_descriptor f : m_region)
       CGAL::Euler::remove_face(halfedge(f, m_tmesh), m_tmesh);
     std::vector<std::pair<Work_vertex, vertex_descriptor> > v2v;
-    std::vector<std::pair<Work_mesh::Halfedge_index, typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> > h2h;
+    std::vector<std::pair<Work_mesh::Halfedge_index, halfedge_descriptor> > h2h;
     CGAL::copy_face_graph(work, m_tmesh,
                           parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v))
                             .halfedge_to_halfedge_output_iterator(std::back_inserter(h2h)),
@@ -162,11 +197,89 @@ public:
     }
   }
 
-private:
+  // Part of the mesh: the region's faces are removed (and with them the vertices and edges no
+  // other face has) and the working mesh's added in their place, sewn to the rest at the seam's
+  // vertices, which are the input's own; the rest of the mesh is not touched.
+  template <typename EdgeConstrainedMap, typename VertexConstrainedMap>
+  void replace_region(const Work_mesh& work, const std::vector<Point>& exact, const std::vector<char>& is_exact,
+                      EdgeConstrainedMap& ecm, VertexConstrainedMap& vcm)
+  {
+    for(face_descriptor f : m_region)
+      CGAL::Euler::remove_face(halfedge(f, m_tmesh), m_tmesh);
+    std::vector<vertex_descriptor> user(work.num_vertices());
+    for(vertex_descriptor v : m_input_vertices)
+      if(m_on_seam[std::size_t(to_work(v))])
+        user[std::size_t(to_work(v))] = v;
+    for(Work_vertex w : work.vertices())
+    {
+      const std::size_t i = std::size_t(w);
+      if(i < m_on_seam.size() && m_on_seam[i])
+        continue;
+      const vertex_descriptor v = add_vertex(m_tmesh);
+      const Vector_3d p = to_vector(work.point(w));
+      put(m_vpm, v, is_exact[i] ? exact[i] : m_construct_point(p.x(), p.y(), p.z()));
+      put(vcm, v, i < m_constrained_vertex.size() && m_constrained_vertex[i] != 0);
+      user[i] = v;
+    }
+    for(Work_mesh::Face_index f : faces_from_seam(work))
+    {
+      const Work_mesh::Halfedge_index h = work.halfedge(f);
+      const std::array<vertex_descriptor, 3> t{{user[std::size_t(work.source(h))], user[std::size_t(work.target(h))],
+                                                user[std::size_t(work.target(work.next(h)))]}};
+      const face_descriptor added = CGAL::Euler::add_face(t, m_tmesh);
+      CGAL_assertion(added != boost::graph_traits<TriangleMesh>::null_face());
+      CGAL_USE(added);
+    }
+    // The seam's edges are the user's own, with their flags.
+    std::vector<char> seam(work.num_edges(), 0);
+    for(const auto& s : m_seam_edges)
+      seam[std::size_t(work.edge(work.halfedge(s.first, s.second)))] = 1;
+    for(Work_mesh::Edge_index e : work.edges())
+    {
+      const std::size_t i = std::size_t(e);
+      if(seam[i])
+        continue;
+      const Work_mesh::Halfedge_index h = work.halfedge(e);
+      const auto found = halfedge(user[std::size_t(work.source(h))], user[std::size_t(work.target(h))], m_tmesh);
+      CGAL_assertion(found.second);
+      put(ecm, edge(found.first, m_tmesh), i < m_user_edge.size() && m_user_edge[i] != 0);
+    }
+  }
+
+  // The working mesh's faces, each component breadth first from its faces on the seam: every face
+  // but a component's first is then added next to one already there.
+  std::vector<Work_mesh::Face_index> faces_from_seam(const Work_mesh& work) const
+  {
+    std::vector<Work_mesh::Face_index> starts, order;
+    for(const auto& s : m_seam_edges)
+      starts.push_back(work.face(work.halfedge(s.first, s.second)));
+    starts.insert(starts.end(), work.faces().begin(), work.faces().end());
+    std::vector<char> seen(work.num_faces(), 0);
+    for(Work_mesh::Face_index start : starts)
+    {
+      if(seen[std::size_t(start)])
+        continue;
+      seen[std::size_t(start)] = 1;
+      std::size_t k = order.size();
+      order.push_back(start);
+      for(; k < order.size(); ++k)
+        for(Work_mesh::Halfedge_index h : halfedges_around_face(work.halfedge(order[k]), work))
+        {
+          const Work_mesh::Face_index g = work.face(work.opposite(h));
+          if(g != Work_mesh::null_face() && !seen[std::size_t(g)])
+          {
+            seen[std::size_t(g)] = 1;
+            order.push_back(g);
+          }
+        }
+    }
+    return order;
+  }
+
   Work_vertex to_work(vertex_descriptor v) const { return m_work_vertex[get(m_vertex_index, v)]; }
 
   template <typename VertexConstrainedMap>
-  void add_vertices(Work_mesh& work, const VertexConstrainedMap& vcm)
+  void add_vertices(Work_mesh& work, const VertexConstrainedMap& vcm, const std::vector<char>& outside)
   {
     std::vector<Work_kernel::Point_3> unit_points;
     unit_points.reserve(m_input_points.size());
@@ -185,15 +298,17 @@ private:
     for(std::size_t i : order)
     {
       m_work_vertex[get(m_vertex_index, m_input_vertices[i])] = work.add_vertex(unit_points[i]);
-      m_constrained_vertex.push_back(get(vcm, m_input_vertices[i]) ? 1 : 0);
+      const bool on_seam = outside[get(m_vertex_index, m_input_vertices[i])] != 0;
+      m_on_seam.push_back(on_seam ? 1 : 0);
+      m_constrained_vertex.push_back(on_seam || get(vcm, m_input_vertices[i]) ? 1 : 0);
     }
   }
 
   void add_faces(Work_mesh& work) const
   {
     std::vector<std::pair<std::size_t, std::array<Work_vertex, 3> > > input_faces;
-    input_faces.reserve(num_faces(m_tmesh));
-    for(auto f : faces(m_tmesh))
+    input_faces.reserve(m_region.size());
+    for(face_descriptor f : m_region)
     {
       const auto h = halfedge(f, m_tmesh);
       const std::array<Work_vertex, 3> t{
@@ -210,11 +325,15 @@ private:
   VertexPointMap m_vpm;
   VertexIndexMap m_vertex_index;
   Construct_point m_construct_point;
-  std::vector<vertex_descriptor> m_input_vertices;
+  std::vector<face_descriptor> m_region;      // the faces remeshed
+  bool m_whole = true;                        // the region is the whole mesh
+  std::vector<std::pair<Work_vertex, Work_vertex> > m_seam_edges;
+  std::vector<char> m_on_seam;                // by working vertex: shared with faces outside the region
+  std::vector<vertex_descriptor> m_input_vertices; // the region's
   std::vector<Vector_3d> m_input_points;      // as the input has them
   Unit_box_normalization m_normalization;
   std::vector<Work_vertex> m_work_vertex;     // by the input's vertex index
-  std::vector<char> m_constrained_vertex;     // by working vertex: the user's fixed vertices
+  std::vector<char> m_constrained_vertex;     // by working vertex: the user's fixed vertices and the seam's
   std::vector<char> m_user_edge;              // by working edge: the user's constrained edges
 };
 
