@@ -27,6 +27,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -501,6 +502,13 @@ TEST(GraphcutRemeshing, TargetLengthRemeshesOnlyTheRegion)
     return sum / double(n);
   };
   EXPECT_GE(mean_min_angle_below(m, true), mean_min_angle_below(whole, false) - 1);
+  // No length, no faces: refused, or nothing to do.
+  Mesh untouched = input;
+  EXPECT_THROW(PMP::graphcut_isotropic_remeshing(faces(untouched), 0.0, untouched), std::invalid_argument);
+  PMP::graphcut_isotropic_remeshing(std::vector<Mesh::Face_index>(), mean, untouched);
+  EXPECT_EQ(untouched.number_of_faces(), input.number_of_faces());
+  for(auto v : vertices(input))
+    EXPECT_EQ(untouched.point(v), input.point(v));
 }
 
 // The paper's Table 1 ("our" rows), with defaults and seed 0, measured as Metro does (300k

@@ -15,6 +15,8 @@
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/property_map.h>
 
+#include <cmath>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -313,8 +315,12 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
  * triangles as `target_edge_length` would everywhere; feature lines and borders are re-sampled too.
  *
  * Where the faces of `face_range` meet the rest of `tmesh`, the seam, its vertices and edges stay
- * as they are (as if constrained); no vertex or face outside the range changes. The seam's edges
- * keep their `edge_is_constrained_map` values.
+ * as they are (as if constrained); no vertex, edge or face outside the range changes. The seam's
+ * edges keep their `edge_is_constrained_map` values. When the connectivity changes, the range's
+ * faces are replaced, and so are its vertices off the seam (the constrained maps are updated). The
+ * range is scaled into its own unit box: `lambda_data` and the tolerances are relative to its size.
+ * No new self-intersection is made within the range; the triangles outside are not looked at.
+ * A `resampling(false)` in `np` is overridden: only re-sampling reaches a density.
  *
  * @tparam FaceRange a range of `boost::graph_traits<TriangleMesh>::%face_descriptor`
  * @tparam TriangleMesh as for `graphcut_isotropic_remeshing(tmesh, np)`
@@ -322,6 +328,7 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
  *
  * @param face_range the faces to remesh (each once)
  * @param target_edge_length the edge length aimed at, in the units of `tmesh`'s points; positive
+ *        and finite
  * @param tmesh a triangle mesh, remeshed in place
  * @param np the named parameters of `graphcut_isotropic_remeshing(tmesh, np)`, and
  *
@@ -339,6 +346,9 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
  *
  * \throws Graphcut_remeshing_input_error as `graphcut_isotropic_remeshing(tmesh, np)` (the whole of
  *         `tmesh` is validated); `tmesh` is then left untouched
+ * \throws std::invalid_argument when `target_edge_length` is not positive and finite
+ * \throws std::runtime_error when the remeshed range would meet the rest of the mesh along an edge
+ *         the rest already has (so that it could not be sewn in); `tmesh` is then left untouched
  */
 template <typename FaceRange, typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -347,7 +357,8 @@ graphcut_isotropic_remeshing(const FaceRange& face_range, const double target_ed
                              const NamedParameters& np = parameters::default_values())
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
-  CGAL_precondition(target_edge_length > 0);
+  if(!(target_edge_length > 0) || !std::isfinite(target_edge_length))
+    throw std::invalid_argument("graphcut_isotropic_remeshing: the target edge length must be positive and finite");
   const auto face_index = CGAL::get_initialized_face_index_map(tmesh, np);
   std::vector<char> in_range(num_faces(tmesh), 0);
   for(face_descriptor f : face_range)
@@ -356,6 +367,8 @@ graphcut_isotropic_remeshing(const FaceRange& face_range, const double target_ed
   for(face_descriptor f : faces(tmesh))
     if(in_range[get(face_index, f)])
       region.push_back(f);
+  if(region.empty())
+    return Graphcut_remeshing_statistics();
   return internal::Graphcut_remeshing::remesh(
     tmesh, std::move(region), [&](face_descriptor f) { return in_range[get(face_index, f)] != 0; },
     target_edge_length, np);

@@ -25,6 +25,8 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <functional>
+#include <stdexcept>
 #include <iterator>
 #include <utility>
 #include <vector>
@@ -62,6 +64,7 @@ public:
             const InRegion& in_region)
   {
     m_region = std::move(region);
+    m_in_region = in_region;
     // (num_faces() would also count the faces a Surface_mesh keeps as removed.)
     m_whole = m_region.size() == std::size_t(std::distance(faces(m_tmesh).begin(), faces(m_tmesh).end()));
     std::vector<char> used(num_vertices(m_tmesh), 0), outside(num_vertices(m_tmesh), 0);
@@ -108,7 +111,6 @@ public:
     for(auto e : work.edges())
       if(work.is_border(e))
         feature_edge[std::size_t(e)] = 1;
-    m_user_edge.assign(feature_edge.size(), 0);
     for(const auto& seam : m_seam_edges)
       feature_edge[std::size_t(work.edge(work.halfedge(seam.first, seam.second)))] = Tracking_state::constrained_edge;
     for(face_descriptor f : m_region)
@@ -117,7 +119,7 @@ public:
         {
           const auto wh = work.halfedge(to_work(source(h, m_tmesh)), to_work(target(h, m_tmesh)));
           feature_edge[std::size_t(work.edge(wh))] = Tracking_state::constrained_edge;
-          m_user_edge[std::size_t(work.edge(wh))] = 1;
+          m_user_edges.emplace_back(work.source(wh), work.target(wh));
         }
     std::vector<Vertex_kind> kind =
       classify_vertices(work, feature_edge, m_constrained_vertex, sharp_bounds.second, crease_turn_angle);
@@ -182,19 +184,33 @@ private:
                           parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v))
                             .halfedge_to_halfedge_output_iterator(std::back_inserter(h2h)),
                           parameters::vertex_point_map(m_vpm));
+    std::vector<vertex_descriptor> user(work.num_vertices());
     for(const auto& p : v2v)
     {
       if(is_exact[std::size_t(p.first)])
         put(m_vpm, p.second, exact[std::size_t(p.first)]);
       const std::size_t i = std::size_t(p.first);
       put(vcm, p.second, i < m_constrained_vertex.size() && m_constrained_vertex[i] && !work.is_removed(p.first));
+      user[i] = p.second;
     }
-    // User-constrained edges are never flipped, split or collapsed: they keep their indices.
     for(const auto& p : h2h)
-    {
-      const std::size_t i = std::size_t(work.edge(p.first));
-      put(ecm, edge(p.second, m_tmesh), i < m_user_edge.size() && m_user_edge[i] != 0);
-    }
+      put(ecm, edge(p.second, m_tmesh), false);
+    put_user_edges(work, user, ecm);
+  }
+
+  // The user's constrained edges, by their ends: they are never flipped, split or collapsed, but a
+  // vertex split may remove and make again an edge of its ring, under another index.
+  template <typename EdgeConstrainedMap>
+  void put_user_edges(const Work_mesh& work, const std::vector<vertex_descriptor>& user, EdgeConstrainedMap& ecm) const
+  {
+    for(const auto& ends : m_user_edges)
+      if(!work.is_removed(ends.first) && !work.is_removed(ends.second) &&
+         work.halfedge(ends.first, ends.second) != Work_mesh::null_halfedge())
+      {
+        const auto found = halfedge(user[std::size_t(ends.first)], user[std::size_t(ends.second)], m_tmesh);
+        if(found.second)
+          put(ecm, edge(found.first, m_tmesh), true);
+      }
   }
 
   // Part of the mesh: the region's faces are removed (and with them the vertices and edges no
@@ -204,12 +220,17 @@ private:
   void replace_region(const Work_mesh& work, const std::vector<Point>& exact, const std::vector<char>& is_exact,
                       EdgeConstrainedMap& ecm, VertexConstrainedMap& vcm)
   {
-    for(face_descriptor f : m_region)
-      CGAL::Euler::remove_face(halfedge(f, m_tmesh), m_tmesh);
+    // The seam's vertices, found before the other vertices of the range are removed.
     std::vector<vertex_descriptor> user(work.num_vertices());
     for(vertex_descriptor v : m_input_vertices)
       if(m_on_seam[std::size_t(to_work(v))])
         user[std::size_t(to_work(v))] = v;
+    std::vector<char> seam(work.num_edges(), 0);
+    for(const auto& s : m_seam_edges)
+      seam[std::size_t(work.edge(work.halfedge(s.first, s.second)))] = 1;
+    check_seam(work, user, seam);
+    for(face_descriptor f : m_region)
+      CGAL::Euler::remove_face(halfedge(f, m_tmesh), m_tmesh);
     for(Work_vertex w : work.vertices())
     {
       const std::size_t i = std::size_t(w);
@@ -231,18 +252,34 @@ private:
       CGAL_USE(added);
     }
     // The seam's edges are the user's own, with their flags.
-    std::vector<char> seam(work.num_edges(), 0);
-    for(const auto& s : m_seam_edges)
-      seam[std::size_t(work.edge(work.halfedge(s.first, s.second)))] = 1;
+    for(Work_mesh::Edge_index e : work.edges())
+      if(!seam[std::size_t(e)])
+      {
+        const Work_mesh::Halfedge_index h = work.halfedge(e);
+        const auto found = halfedge(user[std::size_t(work.source(h))], user[std::size_t(work.target(h))], m_tmesh);
+        CGAL_assertion(found.second);
+        put(ecm, edge(found.first, m_tmesh), false);
+      }
+    put_user_edges(work, user, ecm);
+  }
+
+  // Before `tmesh` changes: the working mesh must not join two seam vertices by an edge that the
+  // rest of the mesh already has (the working mesh does not see it), else it could not be sewn.
+  void check_seam(const Work_mesh& work, const std::vector<vertex_descriptor>& user, const std::vector<char>& seam) const
+  {
     for(Work_mesh::Edge_index e : work.edges())
     {
-      const std::size_t i = std::size_t(e);
-      if(seam[i])
-        continue;
       const Work_mesh::Halfedge_index h = work.halfedge(e);
-      const auto found = halfedge(user[std::size_t(work.source(h))], user[std::size_t(work.target(h))], m_tmesh);
-      CGAL_assertion(found.second);
-      put(ecm, edge(found.first, m_tmesh), i < m_user_edge.size() && m_user_edge[i] != 0);
+      const std::size_t a = std::size_t(work.source(h)), b = std::size_t(work.target(h));
+      if(seam[std::size_t(e)] || a >= m_on_seam.size() || b >= m_on_seam.size() || !m_on_seam[a] || !m_on_seam[b])
+        continue;
+      const auto found = halfedge(user[a], user[b], m_tmesh);
+      if(!found.second)
+        continue;
+      for(halfedge_descriptor g : {found.first, opposite(found.first, m_tmesh)})
+        if(face(g, m_tmesh) != boost::graph_traits<TriangleMesh>::null_face() && !m_in_region(face(g, m_tmesh)))
+          throw std::runtime_error("graphcut_isotropic_remeshing: the remeshed faces would meet the rest of the mesh "
+                                   "along one of its edges; the mesh is left unchanged");
     }
   }
 
@@ -334,7 +371,8 @@ private:
   Unit_box_normalization m_normalization;
   std::vector<Work_vertex> m_work_vertex;     // by the input's vertex index
   std::vector<char> m_constrained_vertex;     // by working vertex: the user's fixed vertices and the seam's
-  std::vector<char> m_user_edge;              // by working edge: the user's constrained edges
+  std::vector<std::pair<Work_vertex, Work_vertex> > m_user_edges; // the user's constrained edges, by their ends
+  std::function<bool(face_descriptor)> m_in_region;
 };
 
 } // namespace Graphcut_remeshing
