@@ -14,6 +14,8 @@
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/tangential_relaxation.h>
+#include <CGAL/Polygon_mesh_processing/transform.h>
+#include <CGAL/Aff_transformation_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -404,26 +406,6 @@ TEST(GraphcutRemeshing, ResamplingShapesACoarseTube)
   }
 }
 
-namespace {
-
-double mean_edge_length(const Mesh& m)
-{
-  double total = 0;
-  for(auto e : edges(m))
-    total += std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m))));
-  return total / double(num_edges(m));
-}
-
-Mesh scaled(const Mesh& input, double factor)
-{
-  Mesh m = input;
-  for(auto v : vertices(m))
-    m.point(v) = CGAL::ORIGIN + factor * (m.point(v) - CGAL::ORIGIN);
-  return m;
-}
-
-} // namespace
-
 // Issue 24's call, shaped as isotropic_remeshing's: a noisy sphere re-sampled at half and twice its
 // mean edge length, at two scales. The vertex count follows the inverse square of the length (16
 // times as many at a quarter of the length), whatever the scale; the triangles are good and the
@@ -433,7 +415,8 @@ TEST(GraphcutRemeshing, TargetLengthSetsTheDensity)
   const Mesh sphere = noisy_sphere(3, 0.02, 0.0, 7);
   for(double scale : {1.0, 1000.0})
   {
-    const Mesh input = scaled(sphere, scale);
+    Mesh input = sphere;
+    PMP::transform(CGAL::Aff_transformation_3<Kernel>(CGAL::SCALING, scale), input);
     const double mean = mean_edge_length(input);
     std::vector<double> count;
     for(double factor : {0.5, 2.0})

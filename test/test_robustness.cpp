@@ -339,14 +339,6 @@ double shortest_edge_at(const Mesh& m, Mesh::Vertex_index v)
   return shortest;
 }
 
-double mean_edge_length(const Mesh& m)
-{
-  double sum = 0;
-  for(Mesh::Edge_index e : edges(m))
-    sum += std::sqrt(CGAL::squared_distance(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1))));
-  return sum / double(num_edges(m));
-}
-
 // Each vertex moved at random in its tangent plane by up to about `tangential` times its shortest
 // edge, and along its normal by up to `normal` times it. Where a triangle would turn by more than
 // 60 degrees or degenerate, both amplitudes are halved and the jitter drawn again: the input stays
