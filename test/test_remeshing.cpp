@@ -434,6 +434,51 @@ TEST(GraphcutRemeshing, TargetLengthSetsTheDensity)
   }
 }
 
+// Issue 24: an error bound instead of a count. A sphere of radius r asked for at a long target
+// length with a sizing tolerance e gets the edges of the chord that keeps within e, sqrt(6 e r),
+// and its triangles' centroids stay within about e of the sphere (a triangle up to 4/3 of its
+// target leaves it by (4/3)^2 e); at two scales. The longest edge length bound shortens the
+// field; values outside their domain are refused.
+TEST(GraphcutRemeshing, SizingToleranceBoundsTheChords)
+{
+  const Mesh sphere = noisy_sphere(3, 0.02, 0.0, 5);
+  const auto parameters = CGAL::parameters::number_of_iterations(30);
+  auto deepest_centroid = [](const Mesh& m, double radius) {
+    double depth = 0;
+    for(auto f : faces(m))
+    {
+      CGAL::Vector_3<Kernel> c = CGAL::NULL_VECTOR;
+      for(auto v : vertices_around_face(halfedge(f, m), m))
+        c = c + (m.point(v) - CGAL::ORIGIN) / 3;
+      depth = (std::max)(depth, radius - std::sqrt(c.squared_length()));
+    }
+    return depth;
+  };
+  for(double scale : {1.0, 1000.0})
+  {
+    Mesh m = sphere;
+    PMP::transform(CGAL::Aff_transformation_3<Kernel>(CGAL::SCALING, scale), m);
+    const double tolerance = 0.003 * scale, chord = std::sqrt(6 * tolerance * scale);
+    PMP::graphcut_isotropic_remeshing(faces(m), 0.5 * scale, m, GP::combine(parameters, GP::sizing_tolerance(tolerance)));
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m));
+    EXPECT_NEAR(mean_edge_length(m) / chord, 1, 0.25) << "scale " << scale;
+    EXPECT_LE(deepest_centroid(m, scale), 2 * tolerance) << "scale " << scale;
+    EXPECT_GE(PMP::mesh_quality_report(m).mean_min_angle, 45) << "scale " << scale;
+  }
+  Mesh bounded = sphere;
+  PMP::graphcut_isotropic_remeshing(faces(bounded), 0.5, bounded,
+                                    GP::combine(parameters, GP::sizing_tolerance(0.003),
+                                                GP::edge_length_bounds(std::make_pair(0.05, 0.1))));
+  EXPECT_NEAR(mean_edge_length(bounded) / 0.1, 1, 0.25);
+  Mesh refused = sphere;
+  EXPECT_THROW(PMP::graphcut_isotropic_remeshing(faces(refused), 0.5, refused, GP::sizing_tolerance(0.0)),
+               std::invalid_argument);
+  EXPECT_THROW(PMP::graphcut_isotropic_remeshing(faces(refused), 0.5, refused,
+                                                 GP::combine(GP::sizing_tolerance(0.01),
+                                                             GP::edge_length_bounds(std::make_pair(0.2, 0.1)))),
+               std::invalid_argument);
+}
+
 // Issue 24: remeshing some faces only. The faces of a noisy sphere below its equator are re-sampled
 // at the mean edge length: every face above keeps its vertices and their exact points, the mesh
 // stays valid and closed, and the region's triangles are as good as a whole run makes them there.

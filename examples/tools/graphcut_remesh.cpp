@@ -7,10 +7,16 @@
 #include "tool_support.h"
 
 #include <CGAL/Polygon_mesh_processing/graphcut_isotropic_remeshing.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -35,6 +41,17 @@ namespace tools = graphcut_remeshing_tools;
 namespace {
 
 namespace GR = PMP::internal::Graphcut_remeshing;
+
+// --target-vertices: how close to N the count must land, and how many runs may get it there.
+constexpr double vertex_count_tolerance = 0.05;
+constexpr int max_vertex_count_runs = 4;
+
+// The edge length of equilateral triangles that cover `area` with about `vertices` vertices (a
+// closed triangle mesh has about twice as many triangles as vertices).
+double length_for_vertices(double area, std::size_t vertices)
+{
+  return std::sqrt(2 * area / (std::sqrt(3.0) * double(vertices)));
+}
 
 // The help, with the library's defaults (the options not given are left to the library).
 std::string usage()
@@ -64,8 +81,23 @@ std::string usage()
       << "  --target-length L       re-sample the surface to edges of about L (the input's units),\n"
       << "                          shorter where it is curved (default: the input's mean edge length,\n"
       << "                          without re-sampling unless --resampling)\n"
+      << "  --target-vertices N     re-sample the surface to about N vertices: the target length is\n"
+      << "                          found from the surface's area, then corrected by the count a run\n"
+      << "                          gives, until it lands within " << int(100 * vertex_count_tolerance)
+      << " % of N (at most " << max_vertex_count_runs << " runs;\n"
+      << "                          default: none)\n"
+      << "  --sizing-tolerance E    how far (input units) a chord of the target length may leave the\n"
+      << "                          surface: re-sampling then aims at the chord lengths within E,\n"
+      << "                          between a quarter of the target length and the target length\n"
+      << "                          (default: none, a field for the target length's count)\n"
       << "  --resampling            re-sample the surface to a curvature-adapted sizing field in the\n"
       << "                          connectivity passes (default: " << (defaults.resampling ? "on" : "off") << ")\n"
+      << "  --threads N             run the remesher's parallel loops on at most N threads; the output\n"
+      << "                          does not depend on N (default: all cores"
+#ifndef CGAL_LINKED_WITH_TBB
+      << "; this build has no TBB and runs on one"
+#endif
+      << ")\n"
          "  --quiet                 print nothing but errors, no progress bar (default: off)\n"
          "  --json FILE             write the quality figures, distances, time and energies as JSON\n"
          "                          (default: no JSON)\n"
@@ -163,7 +195,8 @@ int main(int argc, char** argv)
 {
   // What the user gives; the rest is left to the library's defaults.
   std::optional<std::size_t> iterations, greedy_iterations;
-  std::optional<double> lambda_data, face_data_weight, target_length;
+  std::optional<double> lambda_data, face_data_weight, target_length, sizing_tolerance;
+  std::optional<std::size_t> target_vertices, threads;
   std::optional<unsigned int> seed;
   bool quiet = false, connectivity = true;
   bool resampling = GR::Remeshing_options().resampling;
@@ -204,6 +237,24 @@ int main(int argc, char** argv)
         return EXIT_FAILURE;
       }
     }
+    else if(arg == "--sizing-tolerance")
+    {
+      value(sizing_tolerance);
+      if(!(*sizing_tolerance > 0))
+      {
+        std::cerr << "graphcut_remesh: --sizing-tolerance needs a positive length\n";
+        return EXIT_FAILURE;
+      }
+    }
+    else if(arg == "--target-vertices" || arg == "--threads")
+    {
+      value(arg == "--threads" ? threads : target_vertices);
+      if(!(*(arg == "--threads" ? threads : target_vertices) > 0))
+      {
+        std::cerr << "graphcut_remesh: " << arg << " needs a positive number\n";
+        return EXIT_FAILURE;
+      }
+    }
     else if(arg == "--sharp-angle")
     {
       value(sharp_low);
@@ -232,6 +283,16 @@ int main(int argc, char** argv)
     else
       files.push_back(arg);
   }
+  if(target_length && target_vertices)
+  {
+    std::cerr << "graphcut_remesh: give --target-length or --target-vertices, not both\n";
+    return EXIT_FAILURE;
+  }
+#ifdef CGAL_LINKED_WITH_TBB
+  std::optional<tbb::global_control> thread_limit;
+  if(threads)
+    thread_limit.emplace(tbb::global_control::max_allowed_parallelism, *threads);
+#endif
   if(files.size() != 2)
   {
     std::cerr << "graphcut_remesh: expected INPUT and OUTPUT (see --help)\n" << usage();
@@ -266,20 +327,45 @@ int main(int argc, char** argv)
       GP::sharp_angle_bounds(std::make_pair(sharp_low.value_or(defaults.sharp_angle_bounds.first),
                                             sharp_high.value_or(defaults.sharp_angle_bounds.second))));
     // The call with a target length, as isotropic_remeshing's, or the one without.
-    auto remesh = [&](const auto& np) {
+    auto remesh_with = [&](const auto& np) {
+      mesh = input;
       return target_length ? PMP::graphcut_isotropic_remeshing(faces(mesh), *target_length, mesh, np)
                            : PMP::graphcut_isotropic_remeshing(mesh, np);
     };
-    PMP::Graphcut_remeshing_statistics stats;
-    if(!quiet && stderr_is_terminal())
-    {
+    auto remesh = [&](const auto& np) {
+      return sizing_tolerance ? remesh_with(GP::combine(np, GP::sizing_tolerance(*sizing_tolerance))) : remesh_with(np);
+    };
+    auto run = [&] {
+      if(quiet || !stderr_is_terminal())
+        return remesh(parameters);
       Progress_bar bar(iterations.value_or(defaults.number_of_iterations),
                        greedy_iterations.value_or(defaults.number_of_greedy_iterations));
       // The visitor is copied: it refers to the bar, which clears its line when it goes.
-      stats = remesh(GP::combine(parameters, GP::visitor([&bar](const PMP::Graphcut_remeshing_progress& p) { return bar(p); })));
+      return remesh(GP::combine(parameters, GP::visitor([&bar](const PMP::Graphcut_remeshing_progress& p) { return bar(p); })));
+    };
+    PMP::Graphcut_remeshing_statistics stats;
+    int runs = 0;
+    if(target_vertices)
+    {
+      // The count falls about as the square of the length grows.
+      target_length = length_for_vertices(PMP::area(input), *target_vertices);
+      for(;;)
+      {
+        stats = run();
+        const double ratio = double(mesh.number_of_vertices()) / double(*target_vertices);
+        if(++runs == max_vertex_count_runs || std::abs(ratio - 1) <= vertex_count_tolerance)
+          break;
+        if(!quiet)
+          std::cerr << "graphcut_remesh: " << mesh.number_of_vertices() << " vertices at length " << *target_length
+                    << ", again\n";
+        *target_length *= std::sqrt(ratio);
+      }
     }
     else
-      stats = remesh(parameters);
+    {
+      stats = run();
+      runs = 1;
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     if(!CGAL::IO::write_polygon_mesh(files[1], mesh, CGAL::parameters::stream_precision(17)))
@@ -305,8 +391,10 @@ int main(int argc, char** argv)
       out << ", \"distance\": ";
       tools::write_json(out, distance);
       out << ", \"seconds\": " << tools::json_number(seconds);
-      if(target_length)
-        out << ", \"target_edge_length\": " << tools::json_number(*target_length);
+      // The length the run aimed at: the one asked for or found, else the input's mean.
+      out << ", \"target_edge_length\": " << tools::json_number(target_length ? *target_length : tools::mean_edge_length(input));
+      if(target_vertices)
+        out << ", \"target_vertices\": " << *target_vertices << ", \"runs\": " << runs;
       out << ", \"energy\": [";
       for(std::size_t i = 0; i < stats.energies.size(); ++i)
         out << (i ? ", " : "") << std::setprecision(17) << stats.energies[i];

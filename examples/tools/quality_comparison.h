@@ -96,15 +96,6 @@ inline bool has_length_factors(const std::vector<Quality_row>& rows)
   return std::any_of(rows.begin(), rows.end(), [](const Quality_row& r) { return r.length_factor > 0; });
 }
 
-// The unit of the length factors, and CGAL's target length without them.
-inline double mean_edge_length(const Mesh& mesh)
-{
-  double sum = 0;
-  for(auto e : edges(mesh))
-    sum += CGAL::Polygon_mesh_processing::edge_length(halfedge(e, mesh), mesh);
-  return num_edges(mesh) == 0 ? 0 : sum / double(num_edges(mesh));
-}
-
 // The percentage of faces of `mesh` whose smallest angle is below `threshold_degrees`. The
 // quality report gives the mean only, which a few needles barely move.
 inline double poor_triangle_percentage(const Mesh& mesh, double threshold_degrees)

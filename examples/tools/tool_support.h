@@ -10,6 +10,7 @@
 #include <CGAL/Polygon_mesh_processing/graphcut_remeshing_validation.h>
 #include <CGAL/Polygon_mesh_processing/mesh_quality_report.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
@@ -60,6 +61,15 @@ bool parse_number(const std::string& text, T& value)
   {
     return false;
   }
+}
+
+// The mean length of the edges of `mesh`: the target length the remeshers default to.
+inline double mean_edge_length(const Mesh& mesh)
+{
+  double sum = 0;
+  for(auto e : edges(mesh))
+    sum += CGAL::Polygon_mesh_processing::edge_length(halfedge(e, mesh), mesh);
+  return num_edges(mesh) == 0 ? 0 : sum / double(num_edges(mesh));
 }
 
 // A refusal of the input: its message is the one line a tool prints before exiting with code 1.

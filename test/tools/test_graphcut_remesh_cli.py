@@ -72,10 +72,26 @@ with tempfile.TemporaryDirectory() as tmp:
     check(j['connectivity_passes'] == [] and j['flips'] == 0, "--no-connectivity ran a pass")
     check(all(b <= a * (1 + 1e-12) for a, b in zip(j['energy'], j['energy'][1:])), "energy rose")
 
+    check(j.get('target_edge_length', 0) > 0, "the JSON lacks the input's mean edge length as the target")
+
+    # --target-vertices: the count lands within 10 % of N (the tool aims at 5 %, in at most 4 runs)
+    # and the JSON says what it aimed at; the number of threads changes nothing in the output.
+    r = run([mesh, out2, '--quiet', '--target-vertices', '1400', '--threads', '1', '--json', report] + short)
+    with open(report) as f:
+        j = json.load(f)
+    check(r.returncode == 0 and abs(j['output']['vertices'] - 1400) <= 140,
+          "--target-vertices 1400: %d, %d vertices" % (r.returncode, j['output']['vertices']))
+    check(j.get('target_vertices') == 1400 and 1 <= j.get('runs', 0) <= 4 and j.get('target_edge_length', 0) > 0,
+          "--target-vertices JSON: %r" % {k: j.get(k) for k in ('target_vertices', 'runs', 'target_edge_length')})
+    run([mesh, out3, '--quiet', '--target-vertices', '1400', '--threads', '2'] + short)
+    with open(out2, 'rb') as a, open(out3, 'rb') as b:
+        check(a.read() == b.read(), "--threads 1 and 2 gave different outputs")
+
     r = run(['--help'])
     check(r.returncode == 0 and r.stderr == '', "--help exit code %d, stderr %r" % (r.returncode, r.stderr))
     for option in ('--seed', '--json', '--iterations', '--greedy-iterations', '--lambda-data',
-                   '--face-data-weight', '--no-connectivity', '--resampling', '--sharp-angle', '--quiet', '--help'):
+                   '--face-data-weight', '--no-connectivity', '--resampling', '--sharp-angle', '--quiet', '--help',
+                   '--target-length', '--target-vertices', '--sizing-tolerance', '--threads'):
         check(option in r.stdout, "--help does not document %s" % option)
     for fmt in ('OFF', 'OBJ', 'PLY', 'STL'):
         check(fmt in r.stdout, "--help does not name the %s format" % fmt)
@@ -110,6 +126,12 @@ with tempfile.TemporaryDirectory() as tmp:
     r = run([mesh, missing_out, '--sharp-angle', '40', '30'] + short)
     check(r.returncode == 1 and 'LOW <= HIGH' in r.stderr and not os.path.exists(missing_out),
           "--sharp-angle 40 30: %d %r" % (r.returncode, r.stderr))
+    # A length and a count together, or no thread, are refused.
+    r = run([mesh, missing_out, '--target-length', '0.5', '--target-vertices', '900'] + short)
+    check(r.returncode == 1 and 'not both' in r.stderr and not os.path.exists(missing_out),
+          "--target-length with --target-vertices: %d %r" % (r.returncode, r.stderr))
+    r = run([mesh, missing_out, '--threads', '0'] + short)
+    check(r.returncode == 1 and not os.path.exists(missing_out), "--threads 0: %d %r" % (r.returncode, r.stderr))
     # An output format that cannot be written is refused before the work, with one line.
     unwritable = os.path.join(tmp, 'never.xyz')
     r = run([mesh, unwritable] + short)

@@ -69,6 +69,31 @@ Remeshing_options remeshing_options(const NamedParameters& np)
 
 // Both calls: remeshes the faces `region` of `tmesh` (`in_region(f)` tells them), to
 // `target_edge_length` (the mesh's units) when it is positive, else as the options say.
+// The sizing tolerance and edge length bounds the user gave, in the unit box of `copy`.
+template <typename NamedParameters, typename Copy>
+void read_sizing_tolerance(const NamedParameters& np, const Copy& copy, Remeshing_options& options)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  namespace GNP = graphcut_internal_np;
+  const double tolerance = choose_parameter(get_parameter(np, GNP::sizing_tolerance), 0.);
+  const std::pair<double, double> bounds =
+    choose_parameter(get_parameter(np, GNP::edge_length_bounds), std::pair<double, double>(0., 0.));
+  if(!parameters::is_default_parameter<NamedParameters, GNP::sizing_tolerance_t>::value)
+  {
+    if(!(tolerance > 0) || !std::isfinite(tolerance))
+      throw std::invalid_argument("graphcut_isotropic_remeshing: the sizing tolerance must be positive and finite");
+    options.error_bounded_sizing = true;
+    options.sizing_tolerance = copy.to_unit_length(tolerance);
+  }
+  if(!parameters::is_default_parameter<NamedParameters, GNP::edge_length_bounds_t>::value)
+  {
+    if(!(bounds.first > 0) || !(bounds.first <= bounds.second) || !std::isfinite(bounds.second))
+      throw std::invalid_argument("graphcut_isotropic_remeshing: the edge length bounds must be 0 < shortest <= longest");
+    options.edge_length_bounds = {copy.to_unit_length(bounds.first), copy.to_unit_length(bounds.second)};
+  }
+}
+
 template <typename TriangleMesh, typename InRegion, typename NamedParameters>
 Graphcut_remeshing_statistics
 remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> region,
@@ -98,6 +123,7 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
     tmesh, vpm, vertex_index, gt.construct_point_3_object());
   Work_mesh work;
   copy.make(work, vcm, std::move(region), in_region);
+  read_sizing_tolerance(np, copy, options);
   if(target_edge_length > 0)
   {
     // A density asked for: only re-sampling reaches it.
@@ -285,10 +311,34 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
  *     \cgalParamType{`bool`}
  *     \cgalParamDefault{`false`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::sizing_tolerance}
+ *     \cgalParamDescription{how far, in the units of `tmesh`'s points, a chord of the target length
+ *                           may leave the input surface. With `resampling` (or a target length),
+ *                           the target length at each point becomes the chord length that keeps
+ *                           within it, sqrt(6 tolerance rho) for a smallest radius of curvature rho,
+ *                           between the bounds of `edge_length_bounds`, graded, and no collapse makes
+ *                           a triangle that leaves the input by more (where the shortest bound
+ *                           would, the tolerance wins); without it, the field asks for
+ *                           as many triangles as the target length would everywhere. Without
+ *                           `resampling`, it shortens the edges the connectivity stage aims at where
+ *                           the surface is curved}
+ *     \cgalParamType{`double`, positive}
+ *     \cgalParamDefault{none: with `resampling`, a field for the target length's count; without,
+ *                       3e-3 of the mesh's unit box}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::edge_length_bounds}
+ *     \cgalParamDescription{the shortest and longest target lengths, in the units of `tmesh`'s
+ *                           points, of the field `sizing_tolerance` makes}
+ *     \cgalParamType{`std::pair<double, double>`, 0 < shortest <= longest}
+ *     \cgalParamDefault{`(0, 0)`, which stands for a quarter of the target length and the target
+ *                       length (the input's mean edge length without one)}
+ *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
  * \return the energies before and after each iteration, and counts
  *
+ * \throws std::invalid_argument when `sizing_tolerance` is not positive and finite, or
+ *         `edge_length_bounds` not 0 < shortest <= longest; `tmesh` is then left untouched
  * \throws Graphcut_remeshing_input_error when `validate_graphcut_remeshing_input(tmesh, np)`
  *         finds a defect (no faces, a non-triangle face, a non-finite coordinate, an isolated or
  *         non-manifold vertex, a degenerate triangle, an invalid halfedge structure); `tmesh` is
@@ -312,7 +362,9 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
  * `isotropic_remeshing(faces, target_edge_length, pmesh, np)`. The connectivity passes re-sample the
  * surface (`graphcut_parameters::resampling` is on) to a sizing field around `target_edge_length`:
  * shorter where the surface is curved, longer where it is flat, graded, and asking for as many
- * triangles as `target_edge_length` would everywhere; feature lines and borders are re-sampled too.
+ * triangles as `target_edge_length` would everywhere (with `graphcut_parameters::sizing_tolerance`,
+ * the chord lengths within that tolerance, at most `target_edge_length`); feature lines and
+ * borders are re-sampled too, and a vertex next to a feature line may go into it.
  *
  * Where the faces of `face_range` meet the rest of `tmesh`, the seam, its vertices and edges stay
  * as they are (as if constrained); no vertex, edge or face outside the range changes. The seam's

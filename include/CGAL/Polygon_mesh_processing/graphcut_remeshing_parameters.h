@@ -29,6 +29,8 @@ enum smoothing_step_t { smoothing_step };
 enum visitor_t { visitor };
 enum do_connectivity_optimization_t { do_connectivity_optimization };
 enum resampling_t { resampling };
+enum sizing_tolerance_t { sizing_tolerance };
+enum edge_length_bounds_t { edge_length_bounds };
 } // namespace graphcut_internal_np
 /// \endcond
 
@@ -224,6 +226,27 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(do_connectivity_optimization)
  * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
  */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(resampling)
+/*!
+ * sets `sizing_tolerance`, beyond the paper: how far (in the mesh's units) a chord of the target
+ * length may leave the input surface, as the tolerance of CGAL's `Adaptive_sizing_field`. When
+ * the surface is re-sampled, the target length at each point is the chord length that stays within
+ * it (sqrt(6 tolerance rho), rho the smallest radius of curvature there), between the bounds of
+ * `edge_length_bounds`, and a collapse's new triangles must stay within it.
+ *
+ * \tparam T a number type convertible to `double`
+ * \param value the tolerance, positive
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
+CGAL_GRAPHCUT_REMESHING_PARAMETER(sizing_tolerance)
+/*!
+ * sets `edge_length_bounds`, the shortest and longest target lengths (in the mesh's units) of the
+ * sizing field `sizing_tolerance` builds.
+ *
+ * \tparam T `std::pair<double, double>`
+ * \param value the shortest and the longest length
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
+CGAL_GRAPHCUT_REMESHING_PARAMETER(edge_length_bounds)
 
 #undef CGAL_GRAPHCUT_REMESHING_PARAMETER
 

@@ -79,6 +79,13 @@ struct Remeshing_options
   bool resampling = false;
   // The edge length the re-sampling aims at (unit box), or 0 for the input's mean edge length.
   double target_edge_length = 0;
+  // The user gave the sizing tolerance (graphcut_parameters::sizing_tolerance): re-sampling then
+  // aims at the chord lengths that keep within it, between `edge_length_bounds` (unit box; 0 for
+  // a quarter of the target length, and the target length), instead of a field that asks for as
+  // many triangles as the target length would (sizing.h).
+  bool error_bounded_sizing = false;
+  std::pair<double, double> edge_length_bounds{0, 0};
+  static constexpr double shortest_to_target = 0.25;
 };
 
 class Graphcut_remesher
@@ -294,6 +301,14 @@ private:
                             const Remeshing_options& options)
   {
     const double length = options.target_edge_length > 0 ? options.target_edge_length : mean_edge_length(reference);
+    if(options.resampling && options.error_bounded_sizing)
+    {
+      const double longest = options.edge_length_bounds.second > 0 ? options.edge_length_bounds.second : length;
+      const double shortest =
+        options.edge_length_bounds.first > 0 ? options.edge_length_bounds.first : Remeshing_options::shortest_to_target * longest;
+      return tolerance_sizing(reference, feature_edge, options.sizing_tolerance, shortest, longest,
+                              options.sharp_angle_bounds.second);
+    }
     if(options.resampling)
     {
       Sizing sizing = curvature_sizing(reference, feature_edge, length, options.sharp_angle_bounds.second);

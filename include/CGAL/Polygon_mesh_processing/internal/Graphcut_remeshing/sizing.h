@@ -139,6 +139,31 @@ inline void grade_sizing(const Work_mesh& m, double gradation, std::vector<doubl
   }
 }
 
+// Neighbouring target lengths differ by at most this times the distance between them.
+constexpr double sizing_gradation = 0.5;
+
+// The sizing field of an error bound (graphcut_parameters::sizing_tolerance), as CGAL's
+// Adaptive_sizing_field: at each vertex of the reference `m` the chord length that keeps within
+// `tolerance` of the curvature radius, between `shortest` and `longest`, graded. No count is
+// matched: the tolerance, not a density, is what the user asked for, and the collapses keep to it.
+inline Sizing tolerance_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double tolerance,
+                               double shortest, double longest, double corner_angle)
+{
+  const std::vector<double> radius = smooth_edge_radii(m, feature_edge, corner_angle);
+  Sizing sizing;
+  sizing.mean_length = longest;
+  sizing.tolerance = tolerance;
+  sizing.corner_angle = corner_angle;
+  sizing.target.assign(m.num_vertices(), longest);
+  for(Work_mesh::Vertex_index v : m.vertices())
+    sizing.target[std::size_t(v)] =
+      (std::max)(shortest, (std::min)(longest, std::sqrt(6 * tolerance * radius[std::size_t(v)])));
+  grade_sizing(m, sizing_gradation, sizing.target);
+  for(double& t : sizing.target)
+    t = (std::max)(t, shortest);
+  return sizing;
+}
+
 // The sizing field of the re-sampling connectivity stage on the reference `m`: at each vertex the
 // chord length that keeps within a tolerance of the curvature radius, between half and twice the
 // mean length, graded; the tolerance is chosen so that the field asks for as many triangles as the
@@ -147,7 +172,6 @@ inline void grade_sizing(const Work_mesh& m, double gradation, std::vector<doubl
 inline Sizing curvature_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double mean_length,
                                double corner_angle)
 {
-  static constexpr double gradation = 0.5;
   const std::vector<double> radius = smooth_edge_radii(m, feature_edge, corner_angle);
   const std::vector<double> area = vertex_areas(m);
   double budget = 0;
@@ -179,7 +203,7 @@ inline Sizing curvature_sizing(const Work_mesh& m, const std::vector<char>& feat
   // leave the input.
   sizing.tolerance = std::exp(high);
   fill(sizing.tolerance);
-  grade_sizing(m, gradation, sizing.target);
+  grade_sizing(m, sizing_gradation, sizing.target);
   // Grading only shortens: scale the field back to the budget.
   double count = 0;
   for(Work_mesh::Vertex_index v : m.vertices())
