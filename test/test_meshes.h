@@ -68,13 +68,13 @@ using Work_vertex = Work_mesh::Vertex_index;
 
 inline const double pi = std::acos(-1.0);
 
-// The mean length of the edges of m.
+// The mean length of the edges of m (num_edges() would also count the removed ones).
 inline double mean_edge_length(const Mesh& m)
 {
   double sum = 0;
   for(Mesh::Edge_index e : edges(m))
     sum += std::sqrt(CGAL::squared_distance(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1))));
-  return sum / double(num_edges(m));
+  return sum / double(m.number_of_edges());
 }
 
 // Constrains, with ecm[e] = true, the edges between the faces of m with a vertex below the plane

@@ -434,14 +434,15 @@ TEST(GraphcutRemeshing, TargetLengthSetsTheDensity)
   }
 }
 
-// Issue 24: an error bound instead of a count. A sphere of radius r asked for at a long target
-// length with a sizing tolerance e gets the edges of the chord that keeps within e, sqrt(6 e r),
-// and its triangles' centroids stay within about e of the sphere (a triangle up to 4/3 of its
-// target leaves it by (4/3)^2 e); at two scales. The longest edge length bound shortens the
-// field; values outside their domain are refused.
+// Issue 24: an error bound instead of a count. A fine sphere of radius r (edges of 0.075 r) asked
+// for at a long target length with a sizing tolerance e gets, coarsened, the edges whose
+// equilateral triangles keep within e at their centroids, sqrt(6 e r) = 0.134 r, and its triangles'
+// centroids stay within about e of the sphere (a triangle up to 4/3 of its target leaves it by
+// (4/3)^2 e); at two scales. The longest edge length bound shortens the field; values outside
+// their domain are refused and leave the mesh as it was.
 TEST(GraphcutRemeshing, SizingToleranceBoundsTheChords)
 {
-  const Mesh sphere = noisy_sphere(3, 0.02, 0.0, 5);
+  const Mesh sphere = make_sphere(4);
   const auto parameters = CGAL::parameters::number_of_iterations(30);
   auto deepest_centroid = [](const Mesh& m, double radius) {
     double depth = 0;
@@ -477,6 +478,9 @@ TEST(GraphcutRemeshing, SizingToleranceBoundsTheChords)
                                                  GP::combine(GP::sizing_tolerance(0.01),
                                                              GP::edge_length_bounds(std::make_pair(0.2, 0.1)))),
                std::invalid_argument);
+  EXPECT_EQ(refused.number_of_vertices(), sphere.number_of_vertices());
+  for(auto v : vertices(sphere))
+    EXPECT_EQ(refused.point(v), sphere.point(v));
 }
 
 // Issue 24: remeshing some faces only. The faces of a noisy sphere below its equator are re-sampled

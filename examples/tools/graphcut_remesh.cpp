@@ -7,7 +7,6 @@
 #include "tool_support.h"
 
 #include <CGAL/Polygon_mesh_processing/graphcut_isotropic_remeshing.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -86,9 +85,10 @@ std::string usage()
       << "                          gives, until it lands within " << int(100 * vertex_count_tolerance)
       << " % of N (at most " << max_vertex_count_runs << " runs;\n"
       << "                          default: none)\n"
-      << "  --sizing-tolerance E    how far (input units) a chord of the target length may leave the\n"
-      << "                          surface: re-sampling then aims at the chord lengths within E,\n"
-      << "                          between a quarter of the target length and the target length\n"
+      << "  --sizing-tolerance E    how far (input units) the triangles may leave the surface: re-sampling\n"
+      << "                          then aims at the lengths whose triangles keep within E, between a\n"
+      << "                          quarter of the target length and the target length; without\n"
+      << "                          re-sampling, E shortens the edges aimed at where it is curved\n"
       << "                          (default: none, a field for the target length's count)\n"
       << "  --resampling            re-sample the surface to a curvature-adapted sizing field in the\n"
       << "                          connectivity passes (default: " << (defaults.resampling ? "on" : "off") << ")\n"
@@ -248,8 +248,9 @@ int main(int argc, char** argv)
     }
     else if(arg == "--target-vertices" || arg == "--threads")
     {
-      value(arg == "--threads" ? threads : target_vertices);
-      if(!(*(arg == "--threads" ? threads : target_vertices) > 0))
+      std::optional<std::size_t>& count = arg == "--threads" ? threads : target_vertices;
+      value(count);
+      if(!(*count > 0))
       {
         std::cerr << "graphcut_remesh: " << arg << " needs a positive number\n";
         return EXIT_FAILURE;

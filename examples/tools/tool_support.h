@@ -63,13 +63,14 @@ bool parse_number(const std::string& text, T& value)
   }
 }
 
-// The mean length of the edges of `mesh`: the target length the remeshers default to.
+// The mean length of the edges of `mesh`: the target length the remeshers default to
+// (num_edges() would also count the removed edges).
 inline double mean_edge_length(const Mesh& mesh)
 {
   double sum = 0;
   for(auto e : edges(mesh))
     sum += CGAL::Polygon_mesh_processing::edge_length(halfedge(e, mesh), mesh);
-  return num_edges(mesh) == 0 ? 0 : sum / double(num_edges(mesh));
+  return mesh.number_of_edges() == 0 ? 0 : sum / double(mesh.number_of_edges());
 }
 
 // A refusal of the input: its message is the one line a tool prints before exiting with code 1.

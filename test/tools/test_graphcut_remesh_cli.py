@@ -83,7 +83,9 @@ with tempfile.TemporaryDirectory() as tmp:
           "--target-vertices 1400: %d, %d vertices" % (r.returncode, j['output']['vertices']))
     check(j.get('target_vertices') == 1400 and 1 <= j.get('runs', 0) <= 4 and j.get('target_edge_length', 0) > 0,
           "--target-vertices JSON: %r" % {k: j.get(k) for k in ('target_vertices', 'runs', 'target_edge_length')})
-    run([mesh, out3, '--quiet', '--target-vertices', '1400', '--threads', '2'] + short)
+    os.remove(out3)
+    r = run([mesh, out3, '--quiet', '--target-vertices', '1400', '--threads', '2'] + short)
+    check(r.returncode == 0, "--threads 2: exit code %d (%s)" % (r.returncode, r.stderr))
     with open(out2, 'rb') as a, open(out3, 'rb') as b:
         check(a.read() == b.read(), "--threads 1 and 2 gave different outputs")
 

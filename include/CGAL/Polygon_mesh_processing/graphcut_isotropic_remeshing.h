@@ -67,32 +67,34 @@ Remeshing_options remeshing_options(const NamedParameters& np)
   return options;
 }
 
-// Both calls: remeshes the faces `region` of `tmesh` (`in_region(f)` tells them), to
-// `target_edge_length` (the mesh's units) when it is positive, else as the options say.
-// The sizing tolerance and edge length bounds the user gave, in the unit box of `copy`.
-template <typename NamedParameters, typename Copy>
-void read_sizing_tolerance(const NamedParameters& np, const Copy& copy, Remeshing_options& options)
+// The sizing tolerance and edge length bounds the user gave (the mesh's units; a tolerance of 0 is
+// none, bounds of (0, 0) the defaults), checked before anything is copied.
+struct Sizing_request
+{
+  double tolerance = 0;
+  std::pair<double, double> bounds{0, 0};
+};
+
+template <typename NamedParameters>
+Sizing_request sizing_request(const NamedParameters& np)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
   namespace GNP = graphcut_internal_np;
-  const double tolerance = choose_parameter(get_parameter(np, GNP::sizing_tolerance), 0.);
-  const std::pair<double, double> bounds =
-    choose_parameter(get_parameter(np, GNP::edge_length_bounds), std::pair<double, double>(0., 0.));
-  if(!parameters::is_default_parameter<NamedParameters, GNP::sizing_tolerance_t>::value)
-  {
-    if(!(tolerance > 0) || !std::isfinite(tolerance))
-      throw std::invalid_argument("graphcut_isotropic_remeshing: the sizing tolerance must be positive and finite");
-    options.error_bounded_sizing = true;
-    options.sizing_tolerance = copy.to_unit_length(tolerance);
-  }
-  if(!parameters::is_default_parameter<NamedParameters, GNP::edge_length_bounds_t>::value)
-  {
-    if(!(bounds.first > 0) || !(bounds.first <= bounds.second) || !std::isfinite(bounds.second))
-      throw std::invalid_argument("graphcut_isotropic_remeshing: the edge length bounds must be 0 < shortest <= longest");
-    options.edge_length_bounds = {copy.to_unit_length(bounds.first), copy.to_unit_length(bounds.second)};
-  }
+  Sizing_request r;
+  r.tolerance = choose_parameter(get_parameter(np, GNP::sizing_tolerance), r.tolerance);
+  r.bounds = choose_parameter(get_parameter(np, GNP::edge_length_bounds), r.bounds);
+  if(!parameters::is_default_parameter<NamedParameters, GNP::sizing_tolerance_t>::value &&
+     (!(r.tolerance > 0) || !std::isfinite(r.tolerance)))
+    throw std::invalid_argument("graphcut_isotropic_remeshing: the sizing tolerance must be positive and finite");
+  if(r.bounds != std::make_pair(0., 0.) &&
+     (!(r.bounds.first > 0) || !(r.bounds.first <= r.bounds.second) || !std::isfinite(r.bounds.second)))
+    throw std::invalid_argument("graphcut_isotropic_remeshing: the edge length bounds must be 0 < shortest <= longest");
+  return r;
 }
+
+// Both calls: remeshes the faces `region` of `tmesh` (`in_region(f)` tells them), to
+// `target_edge_length` (the mesh's units) when it is positive, else as the options say.
 
 template <typename TriangleMesh, typename InRegion, typename NamedParameters>
 Graphcut_remeshing_statistics
@@ -109,6 +111,7 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
     throw Graphcut_remeshing_input_error(validation);
 
   Remeshing_options options = remeshing_options(np);
+  const Sizing_request sizing = sizing_request(np);
   auto visitor = choose_parameter(get_parameter(np, graphcut_internal_np::visitor), Default_visitor());
   auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, tmesh));
   auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
@@ -123,7 +126,12 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
     tmesh, vpm, vertex_index, gt.construct_point_3_object());
   Work_mesh work;
   copy.make(work, vcm, std::move(region), in_region);
-  read_sizing_tolerance(np, copy, options);
+  if(sizing.tolerance > 0)
+  {
+    options.error_bounded_sizing = true;
+    options.sizing_tolerance = copy.to_unit_length(sizing.tolerance);
+  }
+  options.edge_length_bounds = {copy.to_unit_length(sizing.bounds.first), copy.to_unit_length(sizing.bounds.second)};
   if(target_edge_length > 0)
   {
     // A density asked for: only re-sampling reaches it.
@@ -312,24 +320,26 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
  *     \cgalParamDefault{`false`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{graphcut_parameters::sizing_tolerance}
- *     \cgalParamDescription{how far, in the units of `tmesh`'s points, a chord of the target length
- *                           may leave the input surface. With `resampling` (or a target length),
- *                           the target length at each point becomes the chord length that keeps
- *                           within it, sqrt(6 tolerance rho) for a smallest radius of curvature rho,
- *                           between the bounds of `edge_length_bounds`, graded, and no collapse makes
- *                           a triangle that leaves the input by more (where the shortest bound
- *                           would, the tolerance wins); without it, the field asks for
- *                           as many triangles as the target length would everywhere. Without
- *                           `resampling`, it shortens the edges the connectivity stage aims at where
- *                           the surface is curved}
+ *     \cgalParamDescription{how far, in the units of `tmesh`'s points, the triangles may leave the
+ *                           input surface. With `resampling` (or a target length), the target
+ *                           length at each point becomes the edge length whose equilateral
+ *                           triangles keep within it at their centroids, sqrt(6 tolerance rho) for a
+ *                           smallest radius of curvature rho (as CGAL's `Adaptive_sizing_field`),
+ *                           between the bounds of `edge_length_bounds`, graded; no collapse and no
+ *                           relaxation step makes a triangle whose centroid leaves the input by
+ *                           more (and where edges of the shortest bound would, they stay shorter);
+ *                           without it, the field asks for as many triangles as the target length
+ *                           would everywhere. Without `resampling`, it shortens the edges the
+ *                           connectivity stage aims at where the surface is curved}
  *     \cgalParamType{`double`, positive}
  *     \cgalParamDefault{none: with `resampling`, a field for the target length's count; without,
  *                       3e-3 of the mesh's unit box}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{graphcut_parameters::edge_length_bounds}
  *     \cgalParamDescription{the shortest and longest target lengths, in the units of `tmesh`'s
- *                           points, of the field `sizing_tolerance` makes}
- *     \cgalParamType{`std::pair<double, double>`, 0 < shortest <= longest}
+ *                           points, of the field `sizing_tolerance` makes (without
+ *                           `sizing_tolerance` they are not used)}
+ *     \cgalParamType{`std::pair<double, double>`, 0 < shortest <= longest, or (0, 0)}
  *     \cgalParamDefault{`(0, 0)`, which stands for a quarter of the target length and the target
  *                       length (the input's mean edge length without one)}
  *   \cgalParamNEnd
@@ -338,7 +348,8 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
  * \return the energies before and after each iteration, and counts
  *
  * \throws std::invalid_argument when `sizing_tolerance` is not positive and finite, or
- *         `edge_length_bounds` not 0 < shortest <= longest; `tmesh` is then left untouched
+ *         `edge_length_bounds` neither (0, 0) nor 0 < shortest <= longest; `tmesh` is then left
+ *         untouched
  * \throws Graphcut_remeshing_input_error when `validate_graphcut_remeshing_input(tmesh, np)`
  *         finds a defect (no faces, a non-triangle face, a non-finite coordinate, an isolated or
  *         non-manifold vertex, a degenerate triangle, an invalid halfedge structure); `tmesh` is
@@ -363,8 +374,9 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
  * surface (`graphcut_parameters::resampling` is on) to a sizing field around `target_edge_length`:
  * shorter where the surface is curved, longer where it is flat, graded, and asking for as many
  * triangles as `target_edge_length` would everywhere (with `graphcut_parameters::sizing_tolerance`,
- * the chord lengths within that tolerance, at most `target_edge_length`); feature lines and
- * borders are re-sampled too, and a vertex next to a feature line may go into it.
+ * the lengths whose triangles keep within that tolerance, between `edge_length_bounds`: by default
+ * at most `target_edge_length`); feature lines and borders are re-sampled too, and a vertex next to
+ * a feature line may go into it.
  *
  * Where the faces of `face_range` meet the rest of `tmesh`, the seam, its vertices and edges stay
  * as they are (as if constrained); no vertex, edge or face outside the range changes. The seam's

@@ -227,11 +227,12 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(do_connectivity_optimization)
  */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(resampling)
 /*!
- * sets `sizing_tolerance`, beyond the paper: how far (in the mesh's units) a chord of the target
- * length may leave the input surface, as the tolerance of CGAL's `Adaptive_sizing_field`. When
- * the surface is re-sampled, the target length at each point is the chord length that stays within
- * it (sqrt(6 tolerance rho), rho the smallest radius of curvature there), between the bounds of
- * `edge_length_bounds`, and a collapse's new triangles must stay within it.
+ * sets `sizing_tolerance`, beyond the paper: how far (in the mesh's units) the triangles may leave
+ * the input surface, as the tolerance of CGAL's `Adaptive_sizing_field`. When the surface is
+ * re-sampled, the target length at each point is the edge length whose equilateral triangles keep
+ * within it at their centroids (sqrt(6 tolerance rho), rho the smallest radius of curvature there),
+ * between the bounds of `edge_length_bounds`, and no collapse or relaxation step makes a triangle
+ * whose centroid leaves the input by more.
  *
  * \tparam T a number type convertible to `double`
  * \param value the tolerance, positive
@@ -240,7 +241,8 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(resampling)
 CGAL_GRAPHCUT_REMESHING_PARAMETER(sizing_tolerance)
 /*!
  * sets `edge_length_bounds`, the shortest and longest target lengths (in the mesh's units) of the
- * sizing field `sizing_tolerance` builds.
+ * sizing field `sizing_tolerance` builds; `(0, 0)` stands for a quarter of the target length and
+ * the target length.
  *
  * \tparam T `std::pair<double, double>`
  * \param value the shortest and the longest length

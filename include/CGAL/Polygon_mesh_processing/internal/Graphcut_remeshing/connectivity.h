@@ -497,7 +497,7 @@ public:
     // (without them the lines' neighbours hold their vertices: cow at twice its mean edge length
     // kept 1616 vertices, 1500 with them); at the input's density they only thin the triangles
     // next to the lines (handle: 1.3 % of its triangles below 30 degrees instead of 0.4 %).
-    const bool into_feature = m_sizing.target_asked_for && !feature && is_free(a) != is_free(b);
+    const bool into_feature = m_sizing.into_lines && !feature && is_free(a) != is_free(b);
     if(into_feature)
       c = is_free(a) ? Collapse{a, b, pb} : Collapse{b, a, pa};
     else if(feature ? !(m_polylines && feature_collapse_ends(e, c)) : !(is_free(a) && is_free(b)))
@@ -546,25 +546,29 @@ public:
       Vertex kept = c.kept, removed = c.removed;
       CGAL::internal::swap_vertices(kept, removed, m_mesh);
     }
-    // Of the two edges of a triangle on e that merge, Euler::collapse_edge may keep either: the
-    // merged edge is a feature edge when one of them was.
+    // The two edges of a triangle on e merge into one. Euler::collapse_edge keeps the kept
+    // vertex's on the side of e's halfedge and the removed vertex's on the other side, so a
+    // feature edge of the kept vertex (a collapse into a feature line) may lose its index: the
+    // merged edge takes its flag and hint.
     struct Wing
     {
       Vertex far;
-      Edge feature; // the feature edge of the two that merge, if any
+      Edge feature;
     };
-    std::vector<Wing> wings;
+    boost::container::small_vector<Wing, 2> wings;
     for(Halfedge g : {m_mesh.halfedge(e), m_mesh.opposite(m_mesh.halfedge(e))})
-      for(Halfedge w : {m_mesh.next(g), m_mesh.prev(g)})
-        if(!m_mesh.is_border(g) && m_state.feature_edge[std::size_t(m_mesh.edge(w))])
-          wings.push_back(Wing{m_mesh.target(m_mesh.next(g)), m_mesh.edge(w)});
+      if(!m_mesh.is_border(g))
+        for(Halfedge w : {m_mesh.next(g), m_mesh.prev(g)})
+          if(m_state.feature_edge[std::size_t(m_mesh.edge(w))])
+            wings.push_back(Wing{m_mesh.target(m_mesh.next(g)), m_mesh.edge(w)});
     const Vertex v = CGAL::Euler::collapse_edge(e, m_mesh);
     CGAL_assertion(v == c.kept);
     for(const Wing& wing : wings)
     {
-      const std::size_t merged = std::size_t(m_mesh.edge(halfedge(wing.far, v, m_mesh).first));
-      m_state.feature_edge[merged] = m_state.feature_edge[std::size_t(wing.feature)];
-      m_state.edge_hint[merged] = m_state.edge_hint[std::size_t(wing.feature)];
+      const Halfedge merged = m_mesh.halfedge(wing.far, v);
+      CGAL_assertion(merged != Work_mesh::null_halfedge());
+      m_state.feature_edge[std::size_t(m_mesh.edge(merged))] = m_state.feature_edge[std::size_t(wing.feature)];
+      m_state.edge_hint[std::size_t(m_mesh.edge(merged))] = m_state.edge_hint[std::size_t(wing.feature)];
     }
     m_mesh.point(v) = Work_kernel::Point_3(c.point.x(), c.point.y(), c.point.z());
     if(is_free(v))

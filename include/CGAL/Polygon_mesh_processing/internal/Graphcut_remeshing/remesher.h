@@ -80,7 +80,7 @@ struct Remeshing_options
   // The edge length the re-sampling aims at (unit box), or 0 for the input's mean edge length.
   double target_edge_length = 0;
   // The user gave the sizing tolerance (graphcut_parameters::sizing_tolerance): re-sampling then
-  // aims at the chord lengths that keep within it, between `edge_length_bounds` (unit box; 0 for
+  // aims at the lengths whose triangles keep within it, between `edge_length_bounds` (unit box; 0 for
   // a quarter of the target length, and the target length), instead of a field that asks for as
   // many triangles as the target length would (sizing.h).
   bool error_bounded_sizing = false;
@@ -306,13 +306,15 @@ private:
       const double longest = options.edge_length_bounds.second > 0 ? options.edge_length_bounds.second : length;
       const double shortest =
         options.edge_length_bounds.first > 0 ? options.edge_length_bounds.first : Remeshing_options::shortest_to_target * longest;
-      return tolerance_sizing(reference, feature_edge, options.sizing_tolerance, shortest, longest,
-                              options.sharp_angle_bounds.second);
+      Sizing sizing = tolerance_sizing(reference, feature_edge, options.sizing_tolerance, shortest, longest,
+                                       options.sharp_angle_bounds.second);
+      sizing.into_lines = options.target_edge_length > 0;
+      return sizing;
     }
     if(options.resampling)
     {
       Sizing sizing = curvature_sizing(reference, feature_edge, length, options.sharp_angle_bounds.second);
-      sizing.target_asked_for = options.target_edge_length > 0;
+      sizing.target_asked_for = sizing.into_lines = options.target_edge_length > 0;
       return sizing;
     }
     Sizing sizing;

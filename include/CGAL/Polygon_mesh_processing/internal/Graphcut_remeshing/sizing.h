@@ -44,6 +44,9 @@ struct Sizing
   // The user asked for the length (not the input's mean): the density comes first, see
   // Connectivity_optimizer::tolerance_for().
   bool target_asked_for = false;
+  // The user asked for a density (a length, with or without a tolerance): a free vertex may
+  // collapse into a feature line (see Connectivity_optimizer::resampling_collapse_gain()).
+  bool into_lines = false;
 
   bool resamples() const { return !target.empty(); }
 
@@ -143,9 +146,10 @@ inline void grade_sizing(const Work_mesh& m, double gradation, std::vector<doubl
 constexpr double sizing_gradation = 0.5;
 
 // The sizing field of an error bound (graphcut_parameters::sizing_tolerance), as CGAL's
-// Adaptive_sizing_field: at each vertex of the reference `m` the chord length that keeps within
-// `tolerance` of the curvature radius, between `shortest` and `longest`, graded. No count is
-// matched: the tolerance, not a density, is what the user asked for, and the collapses keep to it.
+// Adaptive_sizing_field: at each vertex of the reference `m` the edge length whose equilateral
+// triangles keep within `tolerance` of a sphere of the curvature radius at their centroids,
+// between `shortest` and `longest`, graded. No count is matched: the tolerance, not a density, is
+// what the user asked for, and the collapses keep to it.
 inline Sizing tolerance_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double tolerance,
                                double shortest, double longest, double corner_angle)
 {
@@ -158,9 +162,7 @@ inline Sizing tolerance_sizing(const Work_mesh& m, const std::vector<char>& feat
   for(Work_mesh::Vertex_index v : m.vertices())
     sizing.target[std::size_t(v)] =
       (std::max)(shortest, (std::min)(longest, std::sqrt(6 * tolerance * radius[std::size_t(v)])));
-  grade_sizing(m, sizing_gradation, sizing.target);
-  for(double& t : sizing.target)
-    t = (std::max)(t, shortest);
+  grade_sizing(m, sizing_gradation, sizing.target); // only from lengths of at least `shortest`
   return sizing;
 }
 
