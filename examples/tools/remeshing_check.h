@@ -3,7 +3,7 @@
 //
 // What graphcut_isotropic_remeshing promises about its output, checked from outside on the input
 // and the output alone: a valid triangle mesh without degenerate triangles, the input's topology,
-// no more intersecting pairs of triangles than the input had, and the input's corners at their
+// no intersecting pair of triangles away from the input's own, and the input's corners at their
 // exact coordinates. `mesh_quality --check` and the tests use it.
 
 #ifndef CGAL_GRAPHCUT_REMESHING_REMESHING_CHECK_H
@@ -11,6 +11,7 @@
 
 #include "tool_support.h"
 
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 
@@ -73,6 +74,41 @@ inline std::size_t missing_points(const std::vector<Kernel::Point_3>& points, co
   return missing;
 }
 
+// The input's intersecting pairs of triangles, each as the box of its two triangles grown by the
+// input's mean edge length: where the remesher lets intersections stay (1 % more, for the rounding
+// of the unit box it works in).
+inline std::vector<CGAL::Bbox_3> intersection_zones(const Mesh& input)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > pairs;
+  PMP::self_intersections(input, std::back_inserter(pairs));
+  const double r = 1.01 * mean_edge_length(input);
+  std::vector<CGAL::Bbox_3> zones;
+  for(const auto& p : pairs)
+  {
+    const CGAL::Bbox_3 b = PMP::face_bbox(p.first, input) + PMP::face_bbox(p.second, input);
+    zones.emplace_back(b.xmin() - r, b.ymin() - r, b.zmin() - r, b.xmax() + r, b.ymax() + r, b.zmax() + r);
+  }
+  return zones;
+}
+
+// The intersecting pairs of triangles of `output` away from the input's: not both in one zone.
+inline std::size_t new_intersecting_pairs(const Mesh& input, const Mesh& output)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const std::vector<CGAL::Bbox_3> zones = intersection_zones(input);
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > pairs;
+  PMP::self_intersections(output, std::back_inserter(pairs));
+  std::size_t n = 0;
+  for(const auto& p : pairs)
+  {
+    const CGAL::Bbox_3 a = PMP::face_bbox(p.first, output), b = PMP::face_bbox(p.second, output);
+    n += std::none_of(zones.begin(), zones.end(),
+                      [&](const CGAL::Bbox_3& z) { return CGAL::do_overlap(z, a) && CGAL::do_overlap(z, b); });
+  }
+  return n;
+}
+
 // One line for each promise `output` breaks as the remesh of `input`; empty if it keeps them all.
 // `fixed` are points that must be kept too (constrained vertices).
 inline std::vector<std::string> broken_promises(const Mesh& input, const Mesh& output,
@@ -89,12 +125,9 @@ inline std::vector<std::string> broken_promises(const Mesh& input, const Mesh& o
   const Topology a = topology(input), b = topology(output);
   if(!(a == b))
     broken.push_back("topology changed: " + a.text() + " in the input, " + b.text() + " in the output");
-  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > before, after;
-  PMP::self_intersections(input, std::back_inserter(before));
-  PMP::self_intersections(output, std::back_inserter(after));
-  if(after.size() > before.size())
-    broken.push_back(std::to_string(after.size()) + " intersecting pairs of triangles, " +
-                     std::to_string(before.size()) + " in the input");
+  const std::size_t fresh = new_intersecting_pairs(input, output);
+  if(fresh > 0)
+    broken.push_back(std::to_string(fresh) + " intersecting pairs of triangles away from the input's");
   const std::vector<Kernel::Point_3> corners = sure_corners(input);
   const std::size_t moved = missing_points(corners, output);
   if(moved > 0)

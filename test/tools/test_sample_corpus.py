@@ -3,8 +3,8 @@
 """Every mesh of CGAL's sample data (data/meshes of Debian's libcgal-demo) up to a size, as a new
 user would try it: graphcut_remesh with a short schedule, then `mesh_quality --check`, which
 checks the output against CGAL's reading of the input (a valid triangle mesh without degenerate
-faces, the same Euler characteristic, components and border cycles, no more intersecting pairs of
-triangles, the corners at their exact coordinates). A file the tool refuses must be refused in one
+faces, the same Euler characteristic, components and border cycles, no intersecting pair of
+triangles away from the input's own, the corners at their exact coordinates). A file the tool refuses must be refused in one
 line on stderr, with exit code 1 and no output file. Prints a line a file, then the summary.
 
 usage: test_sample_corpus.py GRAPHCUT_REMESH MESH_QUALITY DATA_DIR [--max-vertices N] [--defaults]

@@ -4,9 +4,9 @@
 // What a run promises about the working mesh, checked after every run in debug builds: a valid
 // halfedge structure of triangles, none degenerate, the topology of the input (Euler
 // characteristic, connected components, border cycles), fixed vertices where they were, no more
-// folds off the sharp edges than the input had. The driver, which knows the input's own
-// intersections, adds that no two triangles intersect that did not: a triangle folded over onto
-// its neighbours would.
+// folds off the sharp edges than the input had. The driver, which knows where the input's own
+// intersections are, adds that no two triangles intersect away from them: a triangle folded over
+// onto its neighbours would.
 //
 // (Not "no triangle faces against the nearest reference triangle": where the reference is thinner
 // than a triangle, as on CGAL's anchor, the nearest triangle can be on the other sheet.)

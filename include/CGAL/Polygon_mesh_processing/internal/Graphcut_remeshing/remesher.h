@@ -42,7 +42,6 @@
 #include <iostream>
 #endif
 #include <cstddef>
-#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -113,15 +112,12 @@ public:
     // The working mesh starts as the reference, index for index.
     m_tracking.start(m_reference_feature_edge, m_reference_kind);
     m_energy.collect_feature_edges();
-    // Intersections the input already has are not the optimisation's doing. Faces the input
-    // already made intersect are left to the relocation: no connectivity change touches them,
-    // so their indices, and the list, stay valid.
-    m_input_intersections = m_intersections.all_pairs();
-    m_intersection_frozen.assign(m_mesh.num_vertices(), 0);
-    for(const auto& p : m_input_intersections)
-      for(Face f : {p.first, p.second})
-        for(Vertex u : face_vertices(m_mesh, f))
-          m_intersection_frozen[std::size_t(u)] = 1;
+    // Intersections the input already has are not the optimisation's doing: where they are, the
+    // remesher works as elsewhere, and intersections stay allowed there (see
+    // new_self_intersections()). Freezing those triangles instead kept the input's slivers around
+    // them (cow's tail, ALSTOM_TEST4's strips).
+    for(const auto& p : m_intersections.all_pairs())
+      m_input_intersection_zones.push_back(grown_box(p.first, p.second, m_input_mean_length));
     // With re-sampling the strong creases' turns are not corners: their lines keep near them as
     // the surface does.
     if(m_options.resampling)
@@ -242,25 +238,29 @@ public:
 
   // Section 3 once: local changes then relaxation. Should they make the mesh self-intersect, the
   // pass is undone and tried again with the region around the new intersections left alone, in
-  // this pass and the next ones.
+  // this pass and the next (keep_out_lifetime); later passes try there again, the relocation
+  // having moved the triangles since (kept for the whole run, those regions froze most of
+  // ALSTOM_TEST4 at twice its mean edge length).
   void connectivity_pass(Graphcut_remeshing_statistics& stats)
   {
+    ++m_passes;
+    m_keep_out.erase(std::remove_if(m_keep_out.begin(), m_keep_out.end(),
+                                    [this](const Keep_out& k) { return k.pass + keep_out_lifetime < m_passes; }),
+                     m_keep_out.end());
     for(int attempt = 0; attempt < 3; ++attempt)
     {
       const Work_mesh mesh_before = m_mesh;
       const Tracking_state state_before = m_state;
-      m_state.frozen = m_intersection_frozen;
-      m_state.frozen.resize(m_mesh.num_vertices(), 0);
+      m_state.frozen.assign(m_mesh.num_vertices(), 0);
       for(Vertex v : m_mesh.vertices())
-        for(const CGAL::Bbox_3& b : m_keep_out)
-          if(CGAL::do_overlap(b, m_mesh.point(v).bbox()))
+        for(const Keep_out& k : m_keep_out)
+          if(CGAL::do_overlap(k.box, m_mesh.point(v).bbox()))
             m_state.frozen[std::size_t(v)] = 1;
       Connectivity_optimizer optimizer(m_mesh, m_reference, m_state, m_sizing, &m_polylines,
                                        [this](Vertex v, const Vector_3d& x, double bound) {
                                          return m_energy.local_evidence(v, x, bound);
                                        });
       const Connectivity_counts counts = optimizer.run();
-      m_intersection_frozen.resize(m_mesh.num_vertices(), 0);
       m_energy.collect_feature_edges();
       // The mesh had no new intersections before the pass: only triangles it changed or moved
       // can have made some.
@@ -283,7 +283,7 @@ public:
       }
       for(const auto& pair : fresh)
         for(Face f : {pair.first, pair.second})
-          m_keep_out.push_back(keep_out_box(f));
+          m_keep_out.push_back(Keep_out{grown_box(f, f, 2 * m_input_mean_length), m_passes});
       m_mesh = mesh_before;
       m_state = state_before;
       m_intersections.invalidate();
@@ -414,28 +414,33 @@ private:
         m_tracking.mark_moved(c.moving[i]);
   }
 
-  // Pairs of intersecting triangles that did not intersect in the input (exact predicates); with
-  // `touched` (by vertex), only pairs with a triangle incident to a touched vertex, which are all
-  // the new ones when the mesh had none before those vertices moved.
+  // Pairs of intersecting triangles (exact predicates) away from the input's own intersections:
+  // a pair whose two triangles both reach into the zone of one intersecting pair of the input is
+  // the input's. With `touched` (by vertex), only pairs with a triangle incident to a touched
+  // vertex, which are all the new ones when the mesh had none before those vertices moved.
   std::vector<std::pair<Face, Face> > new_self_intersections(const std::vector<char>* touched = nullptr)
   {
-    const std::vector<std::pair<Face, Face> > pairs =
-      touched ? m_intersections.pairs_touching(*touched) : m_intersections.all_pairs();
     std::vector<std::pair<Face, Face> > fresh;
-    std::set_difference(pairs.begin(), pairs.end(), m_input_intersections.begin(),
-                        m_input_intersections.end(), std::back_inserter(fresh));
+    for(const auto& p : touched ? m_intersections.pairs_touching(*touched) : m_intersections.all_pairs())
+    {
+      const CGAL::Bbox_3 first = grown_box(p.first, p.first, 0), second = grown_box(p.second, p.second, 0);
+      if(std::none_of(m_input_intersection_zones.begin(), m_input_intersection_zones.end(),
+                      [&](const CGAL::Bbox_3& z) { return CGAL::do_overlap(z, first) && CGAL::do_overlap(z, second); }))
+        fresh.push_back(p);
+    }
     return fresh;
   }
 
-  // The region a connectivity pass leaves alone around a triangle it made intersect: the
-  // triangle's box grown by twice the input's mean edge length (not the target's, which a coarse
-  // target makes large enough to freeze a coarsening).
-  CGAL::Bbox_3 keep_out_box(Face f) const
+  // The box of the triangles f and g grown by r on every side. The input's intersecting pairs
+  // are grown by its mean edge length (the zone where its intersections may stay); a triangle a
+  // connectivity pass made intersect by twice that (the region the next attempts leave alone; not
+  // the target's length, which a coarse target makes large enough to freeze a coarsening).
+  CGAL::Bbox_3 grown_box(Face f, Face g, double r) const
   {
     CGAL::Bbox_3 b;
-    for(Vertex u : face_vertices(m_mesh, f))
-      b += m_mesh.point(u).bbox();
-    const double r = 2 * m_input_mean_length;
+    for(Face h : {f, g})
+      for(Vertex u : face_vertices(m_mesh, h))
+        b += m_mesh.point(u).bbox();
     return CGAL::Bbox_3(b.xmin() - r, b.ymin() - r, b.zmin() - r, b.xmax() + r, b.ymax() + r, b.zmax() + r);
   }
 
@@ -454,10 +459,18 @@ private:
   Mesh_energy m_energy;
   Candidate_generator m_candidates;
   Relocation_cut m_cut;
-  std::vector<char> m_intersection_frozen; // by vertex: on a face the input made intersect
-  std::vector<CGAL::Bbox_3> m_keep_out;    // regions where connectivity changes made intersections
+  // A region where a connectivity pass made triangles intersect, left alone by the pass that
+  // made it (its next attempts) and by the next `keep_out_lifetime` passes.
+  struct Keep_out
+  {
+    CGAL::Bbox_3 box;
+    std::size_t pass;
+  };
+  static constexpr std::size_t keep_out_lifetime = 1;
+  std::vector<Keep_out> m_keep_out;
+  std::size_t m_passes = 0; // connectivity passes so far
+  std::vector<CGAL::Bbox_3> m_input_intersection_zones; // see new_self_intersections()
   Triangle_intersections m_intersections;  // of the working mesh; told when its connectivity changes
-  std::vector<std::pair<Face, Face> > m_input_intersections; // sorted
 };
 
 } // namespace Graphcut_remeshing
