@@ -13,7 +13,6 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/tangential_relaxation.h>
 #include <CGAL/Polygon_mesh_processing/transform.h>
 #include <CGAL/Aff_transformation_3.h>
@@ -420,9 +419,10 @@ TEST(GraphcutRemeshing, TargetLengthSetsTheDensity)
 }
 
 // Where the input's triangles intersect, the remesher works as elsewhere: two overlapping spheres
-// refined to half their mean edge length get about four times the vertices near the curve where
-// they cross, as everywhere (when the triangles there were frozen, twice), and no intersection away
-// from the input's.
+// refined to half their mean edge length get about four times the vertices in the zones around the
+// curve where they cross (the boxes of the intersecting pairs, grown by the mean edge length; about
+// half of the vertices), as everywhere (when the triangles there were frozen, twice), and no
+// intersection away from the input's.
 TEST(GraphcutRemeshing, SelfIntersectingInputIsRemeshedWhereItIntersects)
 {
   Mesh input = make_sphere(2);

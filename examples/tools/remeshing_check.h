@@ -4,7 +4,8 @@
 // What graphcut_isotropic_remeshing promises about its output, checked from outside on the input
 // and the output alone: a valid triangle mesh without degenerate triangles, the input's topology,
 // no intersecting pair of triangles away from the input's own, and the input's corners at their
-// exact coordinates. `mesh_quality --check` and the tests use it.
+// exact coordinates. `mesh_quality --check` and the tests use it. (For a call on a range of faces the
+// library takes the zones of intersections from the range alone; these are the whole mesh's.)
 
 #ifndef CGAL_GRAPHCUT_REMESHING_REMESHING_CHECK_H
 #define CGAL_GRAPHCUT_REMESHING_REMESHING_CHECK_H

@@ -383,7 +383,9 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
  * edges keep their `edge_is_constrained_map` values. When the connectivity changes, the range's
  * faces are replaced, and so are its vertices off the seam (the constrained maps are updated). The
  * range is scaled into its own unit box: `lambda_data` and the tolerances are relative to its size.
- * No new self-intersection is made within the range; the triangles outside are not looked at.
+ * No self-intersection is made within the range away from the range's own (those within the box of
+ * an intersecting pair of its triangles, grown by its mean edge length); the triangles outside are
+ * not looked at.
  * A `resampling(false)` in `np` is overridden: only re-sampling reaches a density.
  *
  * @tparam FaceRange a range of `boost::graph_traits<TriangleMesh>::%face_descriptor`

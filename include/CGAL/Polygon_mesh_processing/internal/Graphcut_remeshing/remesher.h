@@ -216,7 +216,7 @@ public:
   }
 
   // The first guarantee the working mesh breaks (guarantees.h), or an empty string; also no
-  // intersecting pair of triangles the input did not have.
+  // intersecting pair of triangles away from the input's own intersections.
   std::string broken_guarantee()
   {
     std::vector<Vertex> fixed;
@@ -233,7 +233,7 @@ public:
     if(!broken.empty())
       return broken;
     m_intersections.invalidate();
-    return new_self_intersections().empty() ? std::string() : std::string("two triangles intersect that did not");
+    return new_self_intersections().empty() ? std::string() : std::string("two triangles intersect away from the input's intersections");
   }
 
   // Section 3 once: local changes then relaxation. Should they make the mesh self-intersect, the
