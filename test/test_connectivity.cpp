@@ -381,6 +381,49 @@ void expect_resampling_guarantees(const Pass_setup& s, const Work& before, doubl
 
 // The field spends the budget of the mean length: flat parts get longer edges, curved parts
 // shorter ones, and a surface curved alike everywhere (or flat) the mean length itself.
+// Coarsening drops the sharp lines that are short at the target's scale: spurs, short lines and
+// small loops go, a long line stays whole (its junction with a dropped spur is no longer a corner),
+// and lines between cones (a box's corners) stay whatever their length. Several scales.
+TEST(Features, ShortSharpLinesAreDroppedButNotAtCones)
+{
+  for(double scale : {1e-3, 1.0, 1e3})
+  {
+    const std::string name = "scale " + std::to_string(scale);
+    const Work grid = to_work_mesh(make_grid(12, 12, [scale](std::size_t i, std::size_t j) {
+      return Point(scale * double(i), scale * double(j), 0);
+    }));
+    auto vertex = [&](std::size_t i, std::size_t j) { return Work::Vertex_index(Work::size_type(12 * j + i)); };
+    auto edge = [&](std::size_t i, std::size_t j, std::size_t k, std::size_t l) {
+      return std::size_t(grid.edge(grid.halfedge(vertex(i, j), vertex(k, l))));
+    };
+    std::vector<std::size_t> long_line, spur{edge(5, 5, 5, 6)}, short_line{edge(2, 9, 3, 9), edge(3, 9, 4, 9)},
+      loop{edge(8, 1, 9, 1), edge(9, 1, 9, 2), edge(9, 2, 8, 1)};
+    for(std::size_t i = 1; i < 10; ++i)
+      long_line.push_back(edge(i, 5, i + 1, 5));
+    std::vector<char> sharp(grid.number_of_edges(), 0);
+    for(const auto* line : {&long_line, &spur, &short_line, &loop})
+      for(std::size_t e : *line)
+        sharp[e] = 1;
+    auto kept = [&](const std::vector<std::size_t>& line, const std::vector<char>& after) {
+      return std::all_of(line.begin(), line.end(), [&](std::size_t e) { return after[e] != 0; });
+    };
+    std::vector<char> coarse = sharp, finer = sharp;
+    GR::drop_short_sharp_lines(grid, 4 * scale, coarse); // the loop is 3.41 long
+    EXPECT_TRUE(kept(long_line, coarse)) << name;
+    EXPECT_EQ(std::count(coarse.begin(), coarse.end(), 1), std::ptrdiff_t(long_line.size())) << name;
+    GR::drop_short_sharp_lines(grid, 1.5 * scale, finer);
+    EXPECT_TRUE(kept(long_line, finer) && kept(short_line, finer) && kept(loop, finer)) << name;
+    EXPECT_FALSE(kept(spur, finer)) << name;
+
+    const Work box = to_work_mesh(jittered_box(scale, 2 * scale, 3 * scale, 3, 7));
+    std::vector<char> box_sharp = GR::detect_sharp_edges(box, 20, 35);
+    const std::vector<char> box_before = box_sharp;
+    GR::drop_short_sharp_lines(box, 100 * scale, box_sharp);
+    EXPECT_EQ(std::count(box_before.begin(), box_before.end(), 1), 36) << name; // 12 edges in 3 each
+    EXPECT_TRUE(box_sharp == box_before) << name;
+  }
+}
+
 TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)
 {
   const Work bent = to_work_mesh(make_grid(16, 10, [](std::size_t i, std::size_t j) {

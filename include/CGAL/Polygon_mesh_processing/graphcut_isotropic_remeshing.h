@@ -142,7 +142,11 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
   // beyond the upper sharp bound, and follows fading creases; without it, a strong crease keeps
   // every turn of its own.
   const double crease_turn_angle = options.resampling ? options.sharp_angle_bounds.second : strong_crease_turn_angle;
-  auto features = copy.features(work, ecm, options.sharp_angle_bounds, crease_turn_angle, options.resampling);
+  // Coarsening: the lines of the input's sampling that are short at the target's scale go.
+  const double shortest_sharp_line =
+    options.target_edge_length > mean_edge_length(work) ? short_sharp_line_to_target * options.target_edge_length : 0;
+  auto features =
+    copy.features(work, ecm, options.sharp_angle_bounds, crease_turn_angle, options.resampling, shortest_sharp_line);
   Graphcut_remesher remesher(work, std::move(features.first), std::move(features.second), options);
   Graphcut_remeshing_statistics stats = remesher.run(visitor);
 #ifndef CGAL_NO_POSTCONDITIONS

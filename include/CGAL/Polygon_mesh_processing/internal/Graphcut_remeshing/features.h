@@ -125,6 +125,77 @@ std::vector<char> detect_sharp_edges(const Mesh& m, double theta_false, double t
   return sharp;
 }
 
+// How far v is from flat, in degrees: 360 (180 on a border) minus the angles of its triangles at v
+// (a cube's corner 90, a horn's tip more; 0 inside a plane).
+template <typename Mesh>
+double angle_defect(const Mesh& m, typename Mesh::Vertex_index v)
+{
+  double sum = 0;
+  for(auto g : halfedges_around_target(m.halfedge(v), m))
+    if(!m.is_border(g))
+      sum += angle(to_vector(m.point(v)), to_vector(m.point(m.source(g))), to_vector(m.point(m.target(m.next(g)))));
+  return std::abs((m.is_border(v) ? 180 : 360) - to_degrees(sum));
+}
+
+// Beyond the paper, for a target coarser than the input: a line of sharp edges shorter than
+// `shortest` from an end or junction to the next (or a closed one) shows nothing the target can
+// keep, yet its ends hold vertices (a junction is a corner). It stops being sharp, unless one of
+// its ends is a cone (angle defect of `cone_defect` or more: a horn's tip, a box's corner), by
+// rounds until none is left. Border and constrained edges are not looked at (marked later).
+constexpr double cone_defect = 45; // degrees
+// The lines dropped when the target is coarser than the input are those shorter than this times
+// the target: longer ones carry thin parts (cow's ears at four times its mean edge length).
+constexpr double short_sharp_line_to_target = 0.15;
+
+template <typename Mesh>
+void drop_short_sharp_lines(const Mesh& m, double shortest, std::vector<char>& sharp)
+{
+  using Halfedge = typename Mesh::Halfedge_index;
+  auto degree = [&](typename Mesh::Vertex_index v) {
+    int n = 0;
+    for(Halfedge g : halfedges_around_target(m.halfedge(v), m))
+      n += sharp[std::size_t(m.edge(g))] ? 1 : 0;
+    return n;
+  };
+  for(bool dropped = true; dropped;)
+  {
+    std::vector<char> seen(m.number_of_edges(), 0);
+    std::vector<std::vector<Halfedge> > lines;
+    // Each line from one of its ends (its first edge unseen), then the closed ones from anywhere.
+    for(bool closed : {false, true})
+      for(Halfedge start : m.halfedges())
+      {
+        if(!sharp[std::size_t(m.edge(start))] || seen[std::size_t(m.edge(start))] ||
+           (!closed && degree(m.source(start)) == 2))
+          continue;
+        std::vector<Halfedge> line{start};
+        seen[std::size_t(m.edge(start))] = 1;
+        double length = 0;
+        for(Halfedge h = start;; h = line.back())
+        {
+          length += (to_vector(m.point(m.target(h))) - to_vector(m.point(m.source(h)))).norm();
+          if(degree(m.target(h)) != 2)
+            break;
+          Halfedge next = h;
+          for(Halfedge g : halfedges_around_source(m.target(h), m))
+            if(m.edge(g) != m.edge(h) && sharp[std::size_t(m.edge(g))])
+              next = g;
+          if(seen[std::size_t(m.edge(next))])
+            break; // back to the start of a closed line
+          seen[std::size_t(m.edge(next))] = 1;
+          line.push_back(next);
+        }
+        if(length < shortest && angle_defect(m, m.source(start)) < cone_defect &&
+           angle_defect(m, m.target(line.back())) < cone_defect)
+          lines.push_back(std::move(line));
+      }
+    for(const auto& line : lines)
+      for(Halfedge h : line)
+        sharp[std::size_t(m.edge(h))] = 0;
+    dropped = !lines.empty();
+  }
+}
+
 enum class Vertex_kind : char
 {
   free_vertex,    // moves on the surface

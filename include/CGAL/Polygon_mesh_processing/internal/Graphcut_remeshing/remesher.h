@@ -237,8 +237,8 @@ public:
   }
 
   // Section 3 once: local changes then relaxation. Should they make the mesh self-intersect, the
-  // pass is undone and tried again with the region around the new intersections left alone, in
-  // this pass and the next (keep_out_lifetime); later passes try there again, the relocation
+  // pass is undone and tried again with the region around the new intersections left alone (a
+  // wider one after a second failure), in this pass and the next (keep_out_lifetime); later passes try there again, the relocation
   // having moved the triangles since (kept for the whole run, those regions froze most of
   // ALSTOM_TEST4 at twice its mean edge length).
   void connectivity_pass(Graphcut_remeshing_statistics& stats)
@@ -281,9 +281,15 @@ public:
         stats.number_of_vertex_splits += counts.vertex_splits;
         return;
       }
+      // First around the vertices of the new pairs only, then around their whole triangles: at a
+      // coarse target a triangle spans many input edges, and its box froze most of ALSTOM_TEST4.
       for(const auto& pair : fresh)
         for(Face f : {pair.first, pair.second})
-          m_keep_out.push_back(Keep_out{grown_box(f, f, 2 * m_input_mean_length), m_passes});
+          if(attempt == 0)
+            for(Vertex u : face_vertices(m_mesh, f))
+              m_keep_out.push_back(Keep_out{grown_box(u, 0.5 * m_input_mean_length), m_passes});
+          else
+            m_keep_out.push_back(Keep_out{grown_box(f, f, 2 * m_input_mean_length), m_passes});
       m_mesh = mesh_before;
       m_state = state_before;
       m_intersections.invalidate();
@@ -441,6 +447,13 @@ private:
     for(Face h : {f, g})
       for(Vertex u : face_vertices(m_mesh, h))
         b += m_mesh.point(u).bbox();
+    return grown(b, r);
+  }
+
+  CGAL::Bbox_3 grown_box(Vertex v, double r) const { return grown(m_mesh.point(v).bbox(), r); }
+
+  static CGAL::Bbox_3 grown(const CGAL::Bbox_3& b, double r)
+  {
     return CGAL::Bbox_3(b.xmin() - r, b.ymin() - r, b.zmin() - r, b.xmax() + r, b.ymax() + r, b.zmax() + r);
   }
 

@@ -101,13 +101,17 @@ public:
   // Tracking_state::constrained_edge; the kinds of the vertices with them, where a border that
   // turns by more than the upper bound is a corner, and so is a strong crease that turns by more
   // than `crease_turn_angle` (see classify_vertices()); with `follow_creases`, fading creases run on
-  // (see detect_sharp_edges()).
+  // (see detect_sharp_edges()); sharp lines shorter than `shortest_sharp_line` are dropped (see
+  // drop_short_sharp_lines()).
   template <typename EdgeConstrainedMap>
   std::pair<std::vector<char>, std::vector<Vertex_kind> > features(const Work_mesh& work, const EdgeConstrainedMap& ecm,
                                                                    const std::pair<double, double>& sharp_bounds,
-                                                                   double crease_turn_angle, bool follow_creases)
+                                                                   double crease_turn_angle, bool follow_creases,
+                                                                   double shortest_sharp_line = 0)
   {
     std::vector<char> feature_edge = detect_sharp_edges(work, sharp_bounds.first, sharp_bounds.second, follow_creases);
+    if(shortest_sharp_line > 0)
+      drop_short_sharp_lines(work, shortest_sharp_line, feature_edge);
     for(auto e : work.edges())
       if(work.is_border(e))
         feature_edge[std::size_t(e)] = 1;
