@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -83,8 +84,8 @@ std::string usage()
       << "  --target-vertices N     re-sample the surface to about N vertices: the target length is\n"
       << "                          found from the surface's area, then corrected by the count a run\n"
       << "                          gives, until it lands within " << int(100 * vertex_count_tolerance)
-      << " % of N (at most " << max_vertex_count_runs << " runs;\n"
-      << "                          default: none)\n"
+      << " % of N (at most " << max_vertex_count_runs << " runs, the\n"
+      << "                          closest kept; default: none)\n"
       << "  --sizing-tolerance E    how far (input units) the triangles may leave the surface: re-sampling\n"
       << "                          then aims at the lengths whose triangles keep within E, between a\n"
       << "                          quarter of the target length and the target length; without\n"
@@ -348,19 +349,39 @@ int main(int argc, char** argv)
     int runs = 0;
     if(target_vertices)
     {
-      // The count falls about as the square of the length grows.
+      // The count falls as a power of the length: the square at first, then the power the last
+      // two runs show (coarse targets, where feature lines hold vertices, fall slower). The run
+      // closest to N is kept.
       target_length = length_for_vertices(PMP::area(input), *target_vertices);
+      double power = 2, previous_length = 0, previous_count = 0;
+      tools::Mesh closest;
+      PMP::Graphcut_remeshing_statistics closest_stats;
+      double closest_error = std::numeric_limits<double>::infinity(), closest_length = *target_length;
       for(;;)
       {
         stats = run();
-        const double ratio = double(mesh.number_of_vertices()) / double(*target_vertices);
+        const double count = double(mesh.number_of_vertices()), ratio = count / double(*target_vertices);
+        if(std::abs(std::log(ratio)) < closest_error)
+        {
+          closest_error = std::abs(std::log(ratio));
+          closest = mesh;
+          closest_stats = stats;
+          closest_length = *target_length;
+        }
         if(++runs == max_vertex_count_runs || std::abs(ratio - 1) <= vertex_count_tolerance)
           break;
         if(!quiet)
           std::cerr << "graphcut_remesh: " << mesh.number_of_vertices() << " vertices at length " << *target_length
                     << ", again\n";
-        *target_length *= std::sqrt(ratio);
+        if(previous_count > 0 && count != previous_count && *target_length != previous_length)
+          power = std::clamp(-std::log(count / previous_count) / std::log(*target_length / previous_length), 0.5, 4.0);
+        previous_length = *target_length;
+        previous_count = count;
+        *target_length *= std::pow(ratio, 1 / power);
       }
+      mesh = std::move(closest);
+      stats = closest_stats;
+      target_length = closest_length;
     }
     else
     {
