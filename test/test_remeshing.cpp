@@ -421,7 +421,7 @@ TEST(GraphcutRemeshing, TargetLengthSetsTheDensity)
 
 // Four times coarser than the input, the count comes near isotropic_remeshing's at the same length
 // (edges of 35 degrees or more constrained): on triceratops the sharp lines of its fine sampling,
-// short at that scale, once held a fifth more vertices; on ALSTOM_TEST4, a CAD strip, the regions
+// short at that scale, once held a quarter more vertices; on ALSTOM_TEST4, a CAD strip, the regions
 // left alone after a pass had made triangles intersect once held 3.5 times as many.
 TEST(GraphcutRemeshing, CoarseTargetComesNearIsotropicRemeshingsCount)
 {

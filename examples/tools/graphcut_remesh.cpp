@@ -346,12 +346,12 @@ int main(int argc, char** argv)
       return remesh(GP::combine(parameters, GP::visitor([&bar](const PMP::Graphcut_remeshing_progress& p) { return bar(p); })));
     };
     PMP::Graphcut_remeshing_statistics stats;
-    int runs = 0;
+    int runs = 0, kept_run = 1;
     if(target_vertices)
     {
       // The count falls as a power of the length: the square at first, then the power the last
-      // two runs show (coarse targets, where feature lines hold vertices, fall slower). The run
-      // closest to N is kept.
+      // two runs show (coarse targets, where feature lines hold vertices, fall slower; a count
+      // that did not fall keeps the power as it was). The run closest to N is kept.
       target_length = length_for_vertices(PMP::area(input), *target_vertices);
       double power = 2, previous_length = 0, previous_count = 0;
       tools::Mesh closest;
@@ -361,20 +361,26 @@ int main(int argc, char** argv)
       {
         stats = run();
         const double count = double(mesh.number_of_vertices()), ratio = count / double(*target_vertices);
-        if(std::abs(std::log(ratio)) < closest_error)
+        ++runs;
+        if(std::abs(ratio - 1) < closest_error)
         {
-          closest_error = std::abs(std::log(ratio));
+          closest_error = std::abs(ratio - 1);
           closest = mesh;
           closest_stats = stats;
           closest_length = *target_length;
+          kept_run = runs;
         }
-        if(++runs == max_vertex_count_runs || std::abs(ratio - 1) <= vertex_count_tolerance)
+        if(runs == max_vertex_count_runs || std::abs(ratio - 1) <= vertex_count_tolerance)
           break;
         if(!quiet)
           std::cerr << "graphcut_remesh: " << mesh.number_of_vertices() << " vertices at length " << *target_length
                     << ", again\n";
-        if(previous_count > 0 && count != previous_count && *target_length != previous_length)
-          power = std::clamp(-std::log(count / previous_count) / std::log(*target_length / previous_length), 0.5, 4.0);
+        if(previous_count > 0)
+        {
+          const double measured = -std::log(count / previous_count) / std::log(*target_length / previous_length);
+          if(std::isfinite(measured) && measured > 0)
+            power = std::clamp(measured, 0.5, 4.0);
+        }
         previous_length = *target_length;
         previous_count = count;
         *target_length *= std::pow(ratio, 1 / power);
@@ -416,7 +422,7 @@ int main(int argc, char** argv)
       // The length the run aimed at: the one asked for or found, else the input's mean.
       out << ", \"target_edge_length\": " << tools::json_number(target_length ? *target_length : tools::mean_edge_length(input));
       if(target_vertices)
-        out << ", \"target_vertices\": " << *target_vertices << ", \"runs\": " << runs;
+        out << ", \"target_vertices\": " << *target_vertices << ", \"runs\": " << runs << ", \"kept_run\": " << kept_run;
       out << ", \"energy\": [";
       for(std::size_t i = 0; i < stats.energies.size(); ++i)
         out << (i ? ", " : "") << std::setprecision(17) << stats.energies[i];

@@ -140,59 +140,100 @@ double angle_defect(const Mesh& m, typename Mesh::Vertex_index v)
 // Beyond the paper, for a target coarser than the input: a line of sharp edges shorter than
 // `shortest` from an end or junction to the next (or a closed one) shows nothing the target can
 // keep, yet its ends hold vertices (a junction is a corner). It stops being sharp, unless one of
-// its ends is a cone (angle defect of `cone_defect` or more: a horn's tip, a box's corner), by
-// rounds until none is left. Border and constrained edges are not looked at (marked later).
+// its vertices where it ends (any of a closed one's) is a cone (angle defect of `cone_defect` or
+// more: a horn's tip, a box's corner). By rounds, shortest first and one line a junction a round:
+// a spur gone merges the two pieces it cut a crease into, which are then measured whole. Only
+// sharp edges count: border and constrained edges are marked later, so a line runs on through a
+// junction with them (it is measured longer, and kept more often).
 constexpr double cone_defect = 45; // degrees
 // The lines dropped when the target is coarser than the input are those shorter than this times
-// the target: longer ones carry thin parts (cow's ears at four times its mean edge length).
-constexpr double short_sharp_line_to_target = 0.15;
+// the target: a quarter of an edge of the target's length is below what its triangles can show.
+constexpr double short_sharp_line_to_target = 0.25;
+
+template <typename Mesh>
+struct Sharp_line
+{
+  std::vector<typename Mesh::Halfedge_index> halfedges;
+  double length = 0;
+  bool at_cone = false;
+};
+
+// The sharp line from `start` (whose source is an end or junction, or any vertex of a closed
+// line) to its next end or junction; marks its edges `seen`.
+template <typename Mesh, typename Degree>
+Sharp_line<Mesh> walk_sharp_line(const Mesh& m, typename Mesh::Halfedge_index start, const std::vector<char>& sharp,
+                                 const Degree& degree, std::vector<char>& seen)
+{
+  Sharp_line<Mesh> line;
+  line.halfedges.push_back(start);
+  seen[std::size_t(m.edge(start))] = 1;
+  bool closed = false;
+  for(auto h = start;; h = line.halfedges.back())
+  {
+    line.length += (to_vector(m.point(m.target(h))) - to_vector(m.point(m.source(h)))).norm();
+    if(degree(m.target(h)) != 2)
+      break;
+    auto next = h;
+    for(auto g : halfedges_around_source(m.target(h), m))
+      if(m.edge(g) != m.edge(h) && sharp[std::size_t(m.edge(g))])
+        next = g;
+    if(seen[std::size_t(m.edge(next))])
+    {
+      closed = true; // back to its start
+      break;
+    }
+    seen[std::size_t(m.edge(next))] = 1;
+    line.halfedges.push_back(next);
+  }
+  const auto first = m.source(start), last = m.target(line.halfedges.back());
+  if(closed)
+    line.at_cone = std::any_of(line.halfedges.begin(), line.halfedges.end(),
+                               [&](auto h) { return angle_defect(m, m.target(h)) >= cone_defect; });
+  else
+    line.at_cone = angle_defect(m, first) >= cone_defect || angle_defect(m, last) >= cone_defect;
+  return line;
+}
 
 template <typename Mesh>
 void drop_short_sharp_lines(const Mesh& m, double shortest, std::vector<char>& sharp)
 {
-  using Halfedge = typename Mesh::Halfedge_index;
   auto degree = [&](typename Mesh::Vertex_index v) {
     int n = 0;
-    for(Halfedge g : halfedges_around_target(m.halfedge(v), m))
+    for(auto g : halfedges_around_target(m.halfedge(v), m))
       n += sharp[std::size_t(m.edge(g))] ? 1 : 0;
     return n;
   };
-  for(bool dropped = true; dropped;)
+  for(;;)
   {
     std::vector<char> seen(m.number_of_edges(), 0);
-    std::vector<std::vector<Halfedge> > lines;
-    // Each line from one of its ends (its first edge unseen), then the closed ones from anywhere.
+    std::vector<Sharp_line<Mesh> > short_lines;
+    // Each line from one of its ends or junctions, then the closed ones from anywhere.
     for(bool closed : {false, true})
-      for(Halfedge start : m.halfedges())
-      {
-        if(!sharp[std::size_t(m.edge(start))] || seen[std::size_t(m.edge(start))] ||
-           (!closed && degree(m.source(start)) == 2))
-          continue;
-        std::vector<Halfedge> line{start};
-        seen[std::size_t(m.edge(start))] = 1;
-        double length = 0;
-        for(Halfedge h = start;; h = line.back())
+      for(auto start : m.halfedges())
+        if(sharp[std::size_t(m.edge(start))] && !seen[std::size_t(m.edge(start))] &&
+           (closed || degree(m.source(start)) != 2))
         {
-          length += (to_vector(m.point(m.target(h))) - to_vector(m.point(m.source(h)))).norm();
-          if(degree(m.target(h)) != 2)
-            break;
-          Halfedge next = h;
-          for(Halfedge g : halfedges_around_source(m.target(h), m))
-            if(m.edge(g) != m.edge(h) && sharp[std::size_t(m.edge(g))])
-              next = g;
-          if(seen[std::size_t(m.edge(next))])
-            break; // back to the start of a closed line
-          seen[std::size_t(m.edge(next))] = 1;
-          line.push_back(next);
+          Sharp_line<Mesh> line = walk_sharp_line(m, start, sharp, degree, seen);
+          if(line.length < shortest && !line.at_cone)
+            short_lines.push_back(std::move(line));
         }
-        if(length < shortest && angle_defect(m, m.source(start)) < cone_defect &&
-           angle_defect(m, m.target(line.back())) < cone_defect)
-          lines.push_back(std::move(line));
-      }
-    for(const auto& line : lines)
-      for(Halfedge h : line)
+    std::stable_sort(short_lines.begin(), short_lines.end(),
+                     [](const Sharp_line<Mesh>& a, const Sharp_line<Mesh>& b) { return a.length < b.length; });
+    std::vector<char> junction_used(m.number_of_vertices(), 0);
+    bool dropped = false;
+    for(const auto& line : short_lines)
+    {
+      const auto first = m.source(line.halfedges.front()), last = m.target(line.halfedges.back());
+      if(junction_used[std::size_t(first)] || junction_used[std::size_t(last)])
+        continue;
+      for(auto v : {first, last})
+        junction_used[std::size_t(v)] = degree(v) >= 3 ? 1 : 0;
+      for(auto h : line.halfedges)
         sharp[std::size_t(m.edge(h))] = 0;
-    dropped = !lines.empty();
+      dropped = true;
+    }
+    if(!dropped)
+      return;
   }
 }
 

@@ -238,9 +238,9 @@ public:
 
   // Section 3 once: local changes then relaxation. Should they make the mesh self-intersect, the
   // pass is undone and tried again with the region around the new intersections left alone (a
-  // wider one after a second failure), in this pass and the next (keep_out_lifetime); later passes try there again, the relocation
-  // having moved the triangles since (kept for the whole run, those regions froze most of
-  // ALSTOM_TEST4 at twice its mean edge length).
+  // wider one after a second failure), in this pass and the next (keep_out_lifetime); later
+  // passes try there again, the relocation having moved the triangles since (kept for the whole
+  // run, those regions froze most of ALSTOM_TEST4 at twice its mean edge length).
   void connectivity_pass(Graphcut_remeshing_statistics& stats)
   {
     ++m_passes;
@@ -281,13 +281,20 @@ public:
         stats.number_of_vertex_splits += counts.vertex_splits;
         return;
       }
-      // First around the vertices of the new pairs only, then around their whole triangles: at a
-      // coarse target a triangle spans many input edges, and its box froze most of ALSTOM_TEST4.
+      // First around the vertices of the new pairs only, where they are and where they were
+      // before the pass (a collapse's kept vertex may have moved), then around their whole
+      // triangles: at a coarse target a triangle spans many input edges, and its box froze most of
+      // ALSTOM_TEST4.
       for(const auto& pair : fresh)
         for(Face f : {pair.first, pair.second})
           if(attempt == 0)
             for(Vertex u : face_vertices(m_mesh, f))
-              m_keep_out.push_back(Keep_out{grown_box(u, 0.5 * m_input_mean_length), m_passes});
+            {
+              const double r = 0.5 * m_input_mean_length;
+              m_keep_out.push_back(Keep_out{grown(m_mesh.point(u).bbox(), r), m_passes});
+              if(std::size_t(u) < mesh_before.num_vertices() && !mesh_before.is_removed(u))
+                m_keep_out.push_back(Keep_out{grown(mesh_before.point(u).bbox(), r), m_passes});
+            }
           else
             m_keep_out.push_back(Keep_out{grown_box(f, f, 2 * m_input_mean_length), m_passes});
       m_mesh = mesh_before;
@@ -439,8 +446,9 @@ private:
 
   // The box of the triangles f and g grown by r on every side. The input's intersecting pairs
   // are grown by its mean edge length (the zone where its intersections may stay); a triangle a
-  // connectivity pass made intersect by twice that (the region the next attempts leave alone; not
-  // the target's length, which a coarse target makes large enough to freeze a coarsening).
+  // connectivity pass made intersect, after a second failure, by twice that (the region the next
+  // attempts leave alone; not the target's length, which a coarse target makes large enough to
+  // freeze a coarsening).
   CGAL::Bbox_3 grown_box(Face f, Face g, double r) const
   {
     CGAL::Bbox_3 b;
@@ -450,8 +458,7 @@ private:
     return grown(b, r);
   }
 
-  CGAL::Bbox_3 grown_box(Vertex v, double r) const { return grown(m_mesh.point(v).bbox(), r); }
-
+  // b grown by r on every side.
   static CGAL::Bbox_3 grown(const CGAL::Bbox_3& b, double r)
   {
     return CGAL::Bbox_3(b.xmin() - r, b.ymin() - r, b.zmin() - r, b.xmax() + r, b.ymax() + r, b.zmax() + r);
