@@ -442,6 +442,36 @@ TEST(GraphcutRemeshing, CoarseTargetComesNearIsotropicRemeshingsCount)
   }
 }
 
+// A coarser target re-samples the feature lines too: a box's edges, cut into ten segments, at a
+// target of 1.4 and 1.6 segments. Removing a line's vertex alone merges two segments, beyond 4/3
+// of the target; the lines' segments stayed at 0.78 and 0.80 times the target on average. The
+// kept end also slides to the middle of the collapsed segment: 0.87 to 0.88 times.
+TEST(GraphcutRemeshing, CoarseTargetResamplesFeatureLines)
+{
+  for(double scale : {1e-3, 1.0, 1e3})
+    for(double factor : {1.4, 1.6})
+    {
+      Mesh m = jittered_box(scale, scale, scale, 10, 3);
+      const double target = factor * scale / 10;
+      PMP::graphcut_isotropic_remeshing(faces(m), target, m, CGAL::parameters::number_of_iterations(30));
+      std::size_t corners = 0, on_edges = 0;
+      for(auto v : vertices(m))
+      {
+        const Point& p = m.point(v);
+        int bounded = 0;
+        for(double x : {p.x(), p.y(), p.z()})
+          bounded += (std::abs(x) <= 1e-12 * scale || std::abs(x - scale) <= 1e-12 * scale) ? 1 : 0;
+        corners += bounded == 3 ? 1 : 0;
+        on_edges += bounded == 2 ? 1 : 0;
+      }
+      EXPECT_EQ(corners, 8u);
+      // The twelve edges of length `scale` are cut into on_edges + 12 segments.
+      const double mean_segment = 12 * scale / double(on_edges + 12);
+      EXPECT_GE(mean_segment, 0.83 * target) << "scale " << scale << ", factor " << factor << ": " << on_edges;
+      EXPECT_LE(mean_segment, 1.05 * target) << "scale " << scale << ", factor " << factor << ": " << on_edges;
+    }
+}
+
 // Where the input's triangles intersect, the remesher works as elsewhere: two overlapping spheres
 // refined to half their mean edge length get about four times the vertices in the zones around the
 // curve where they cross (the boxes of the intersecting pairs, grown by the mean edge length; about

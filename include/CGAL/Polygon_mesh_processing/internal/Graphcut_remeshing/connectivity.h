@@ -397,6 +397,8 @@ public:
   {
     Vertex removed, kept;
     Vector_3d point; // where the kept vertex goes
+    bool to_line_midpoint = false; // the kept vertex slides to `on_line`, the point of its line
+    Location on_line;
   };
 
   // How many feature edges v has, and the far end of one that is not e.
@@ -442,6 +444,50 @@ public:
       c = Collapse{r, k, pk};
     }
     return found;
+  }
+
+  // A feature edge whose two ends both slide on the line also shortens it by one vertex when the
+  // kept end moves to the point of the line halfway between them: the two edges beside it then
+  // share its length. Removing an end alone merges two edges, which cannot shorten a line whose
+  // edges are all about 2/3 of their target (their sum is beyond 4/3 of it). Both ends must be
+  // turns below the corner angle, and both new chords are at most 4/3 of their target and keep
+  // within the tolerance of the line. Only when the user asked for a density, as the collapses
+  // into lines.
+  bool feature_collapse_midpoint(Edge e, Collapse& c) const
+  {
+    const double min_cosine = std::cos(m_sizing.corner_angle * pi / 180);
+    const Halfedge h = m_mesh.halfedge(e);
+    const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
+    Vertex xa = a, xb = b;
+    for(Vertex v : {a, b})
+      if(m_state.kind[std::size_t(v)] != Vertex_kind::feature_vertex)
+        return false;
+    if(feature_degree(a, e, xa) != 2 || feature_degree(b, e, xb) != 2 || xa == b || xb == a || xa == xb)
+      return false;
+    const Vector_3d pa = position(a), pb = position(b), pxa = position(xa), pxb = position(xb);
+    if(!((pa - pxa).normalized().dot((pb - pa).normalized()) > min_cosine) ||
+       !((pb - pa).normalized().dot((pxb - pb).normalized()) > min_cosine))
+      return false;
+    // As for a split of a sharp edge: the polyline between a and b may be far from straight, and
+    // the point must still fall well inside the segment's span.
+    const Location middle = feature_midpoint(a, b);
+    const Vector_3d pm = m_polylines->point(middle);
+    const double length = (pa - pb).norm();
+    if(!((pm - pa).norm() > length / 4 && (pm - pb).norm() > length / 4))
+      return false;
+    for(const auto& end : {std::make_pair(a, xa), std::make_pair(b, xb)})
+    {
+      // A user's constrained edge keeps its ends.
+      if(m_state.feature_edge[std::size_t(m_mesh.edge(m_mesh.halfedge(end.first, end.second)))] ==
+         Tracking_state::constrained_edge)
+        return false;
+      const double chord = (pm - position(end.second)).norm(), target = edge_length_target(end.first, end.second);
+      if(chord > 4.0 / 3.0 * target ||
+         !(m_polylines->chord_deviation(middle, feature_location(end.second), 2 * chord) <= tolerance_for(chord, target)))
+        return false;
+    }
+    c = Collapse{a, b, pm, true, middle};
+    return true;
   }
 
   // The smallest angle of the triangles around a and b.
@@ -498,9 +544,21 @@ public:
     // kept 1616 vertices, 1500 with them); at the input's density they only thin the triangles
     // next to the lines (handle: 1.3 % of its triangles below 30 degrees instead of 0.4 %).
     const bool into_feature = m_sizing.into_lines && !feature && is_free(a) != is_free(b);
+    // The ways to collapse e: where the kept vertex goes.
+    boost::container::small_vector<Collapse, 3> trials;
     if(into_feature)
-      c = is_free(a) ? Collapse{a, b, pb} : Collapse{b, a, pa};
-    else if(feature ? !(m_polylines && feature_collapse_ends(e, c)) : !(is_free(a) && is_free(b)))
+      trials.push_back(is_free(a) ? Collapse{a, b, pb} : Collapse{b, a, pa});
+    else if(feature)
+    {
+      Collapse f;
+      if(m_polylines && feature_collapse_ends(e, f))
+        trials.push_back(f);
+      if(m_sizing.into_lines && m_polylines && feature_collapse_midpoint(e, f))
+        trials.push_back(f);
+    }
+    else if(!(is_free(a) && is_free(b)))
+      return 0;
+    if(feature && trials.empty())
       return 0;
     // The triangles on e go; their far vertices keep three edges, and no two feature edges merge
     // (the free end has none).
@@ -514,25 +572,25 @@ public:
       }
     if(!CGAL::Euler::does_satisfy_link_condition(e, m_mesh))
       return 0;
+    if(trials.empty())
+      // A free edge becomes its end or its midpoint on the reference.
+      for(const Vector_3d& p : {pb, pa, project((pa + pb) / 2, a)})
+        trials.push_back(Collapse{a, b, p});
     const double old_min = smallest_angle_around(a, b);
-    // A free edge becomes its end or its midpoint on the reference, whichever keeps the best
-    // triangles; the new ones may be thinner than the old by half at most.
+    // The way that keeps the best triangles; the new ones may be thinner than the old by half at
+    // most.
     double best = -1;
-    Collapse chosen = c;
-    const std::array<Vector_3d, 3> places{{pb, pa, project((pa + pb) / 2, a)}};
-    for(std::size_t k = 0; k < (feature || into_feature ? 1 : places.size()); ++k)
+    for(const Collapse& trial : trials)
     {
-      Collapse trial = feature || into_feature ? c : Collapse{a, b, places[k]};
       const double smallest = collapsed_smallest_angle(trial);
       if(smallest > best)
       {
         best = smallest;
-        chosen = trial;
+        c = trial;
       }
     }
     if(!(best >= 0.5 * old_min))
       return 0;
-    c = chosen;
     return 1 - length / (4.0 / 5.0 * target);
   }
 
@@ -571,7 +629,12 @@ public:
       m_state.edge_hint[std::size_t(m_mesh.edge(merged))] = m_state.edge_hint[std::size_t(wing.feature)];
     }
     m_mesh.point(v) = Work_kernel::Point_3(c.point.x(), c.point.y(), c.point.z());
-    if(is_free(v))
+    if(c.to_line_midpoint)
+    {
+      m_state.location[std::size_t(v)] = c.on_line;
+      bind_new_vertex(v, v, Vertex_kind::feature_vertex);
+    }
+    else if(is_free(v))
       bind_new_vertex(v, v);
     for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
       if(!m_mesh.is_border(g))
