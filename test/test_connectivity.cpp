@@ -423,6 +423,57 @@ TEST(Features, ShortSharpLinesAreDroppedButNotAtCones)
   }
 }
 
+// Coarsening merges the border's corners that are close at the target's scale: a square notch
+// one cell deep in the border of a flat grid turns by 90 degrees at four vertices, three cells
+// along the border from first to last; a quarter of a coarse target longer than that leaves one of
+// them a corner (the user's vertex among them, if any, whatever its turn) and the grid's own
+// corners; one shorter than a cell all. Several scales.
+TEST(Features, CloseBorderCornersMergeAtCoarseTargets)
+{
+  for(double scale : {1e-3, 1.0, 1e3})
+  {
+    const std::string name = "scale " + std::to_string(scale);
+    std::vector<Point> points;
+    std::vector<std::array<std::size_t, 3> > triangles;
+    for(std::size_t j = 0; j < 12; ++j)
+      for(std::size_t i = 0; i < 12; ++i)
+        points.push_back(Point(scale * double(i), scale * double(j), 0));
+    auto id = [](std::size_t i, std::size_t j) { return 12 * j + i; };
+    for(std::size_t j = 0; j + 1 < 12; ++j)
+      for(std::size_t i = 0; i + 1 < 12; ++i)
+        if(i != 5 || j != 0) // the notch
+        {
+          triangles.push_back({{id(i, j), id(i + 1, j), id(i + 1, j + 1)}});
+          triangles.push_back({{id(i, j), id(i + 1, j + 1), id(i, j + 1)}});
+        }
+    const Work grid = to_work_mesh(mesh_from_soup(points, triangles));
+    std::vector<char> border(grid.number_of_edges(), 0);
+    for(auto e : grid.edges())
+      border[std::size_t(e)] = grid.is_border(e) ? 1 : 0;
+    auto corners = [&](const std::vector<char>& constrained, double shortest) {
+      std::vector<GR::Vertex_kind> kind = GR::classify_vertices(grid, border, constrained, 35);
+      EXPECT_EQ(std::count(kind.begin(), kind.end(), GR::Vertex_kind::fixed_vertex), 8) << name;
+      GR::merge_close_border_corners(grid, border, constrained, shortest, kind);
+      std::set<std::size_t> fixed;
+      for(auto v : grid.vertices())
+        if(kind[std::size_t(v)] == GR::Vertex_kind::fixed_vertex)
+          fixed.insert(std::size_t(v));
+      return fixed;
+    };
+    const std::vector<char> none(grid.number_of_vertices(), 0);
+    const std::set<std::size_t> grid_corners{id(0, 0), id(11, 0), id(0, 11), id(11, 11)};
+    std::set<std::size_t> coarse = corners(none, 3.5 * scale);
+    EXPECT_EQ(coarse.size(), 5u) << name;
+    EXPECT_TRUE(std::includes(coarse.begin(), coarse.end(), grid_corners.begin(), grid_corners.end())) << name;
+    EXPECT_EQ(corners(none, 0.5 * scale).size(), 8u) << name;
+    std::vector<char> user = none;
+    user[id(5, 1)] = 1;
+    std::set<std::size_t> with_user = corners(user, 3.5 * scale);
+    EXPECT_EQ(with_user.size(), 5u) << name;
+    EXPECT_EQ(with_user.count(id(5, 1)), 1u) << name;
+  }
+}
+
 // The field spends the budget of the mean length: flat parts get longer edges, curved parts
 // shorter ones, and a surface curved alike everywhere (or flat) the mean length itself.
 TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)

@@ -17,7 +17,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
+#include <set>
 #include <vector>
 
 namespace CGAL {
@@ -288,6 +290,82 @@ std::vector<Vertex_kind> classify_vertices(const Mesh& m, const std::vector<char
       kind[std::size_t(v)] = Vertex_kind::feature_vertex;
   }
   return kind;
+}
+
+// Beyond the paper, for a target coarser than the input, as drop_short_sharp_lines(): two corners
+// of a border closer than `shortest` along it make a notch or a step the target cannot show, yet
+// each holds a vertex, and the edge between them stays short (ALSTOM_TEST4's borders at four
+// times its mean edge length). A corner that is one only because the border turns there (not a
+// junction, not the user's) slides instead when a corner that turns more, or one that is not of
+// that kind, is kept closer than `shortest` along its border; the stronger turns are decided
+// first.
+template <typename Mesh>
+void merge_close_border_corners(const Mesh& m, const std::vector<char>& feature_edge,
+                                const std::vector<char>& constrained_vertex, double shortest,
+                                std::vector<Vertex_kind>& kind)
+{
+  using Halfedge = typename Mesh::Halfedge_index;
+  auto turn_only = [&](typename Mesh::Vertex_index v) {
+    int count = 0, user = 0;
+    for(auto h : halfedges_around_target(m.halfedge(v), m))
+    {
+      count += feature_edge[std::size_t(m.edge(h))] ? 1 : 0;
+      user += feature_edge[std::size_t(m.edge(h))] == 2 ? 1 : 0; // Tracking_state::constrained_edge
+    }
+    return count == 2 && user == 0 && !constrained_vertex[std::size_t(v)];
+  };
+  std::vector<char> seen(m.number_of_halfedges(), 0);
+  for(Halfedge start : m.halfedges())
+  {
+    if(!m.is_border(start) || seen[std::size_t(start)])
+      continue;
+    // The loop's corners: where along it (from `start`'s target), how much the border turns
+    // there (the kept ones first), and whether they may slide.
+    struct Corner
+    {
+      double at, turn;
+      typename Mesh::Vertex_index v;
+      bool may_slide;
+    };
+    std::vector<Corner> corners;
+    double along = 0;
+    for(Halfedge h = start;; )
+    {
+      seen[std::size_t(h)] = 1;
+      const auto v = m.target(h);
+      const Halfedge next = m.next(h);
+      if(kind[std::size_t(v)] == Vertex_kind::fixed_vertex)
+      {
+        const Vector_3d p = to_vector(m.point(v));
+        const double turn = 180 - to_degrees(angle(p, to_vector(m.point(m.source(h))), to_vector(m.point(m.target(next)))));
+        const bool may_slide = turn_only(v);
+        corners.push_back(Corner{along, may_slide ? turn : 360, v, may_slide});
+      }
+      along += (to_vector(m.point(m.target(next))) - to_vector(m.point(v))).norm();
+      h = next;
+      if(h == start)
+        break;
+    }
+    const double perimeter = along;
+    std::stable_sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) { return a.turn > b.turn; });
+    std::set<double> kept;
+    for(const Corner& c : corners)
+    {
+      // The nearest kept corners before and after c along the loop, which is closed.
+      bool near = false;
+      if(!kept.empty())
+      {
+        auto after = kept.lower_bound(c.at);
+        const double to_after = after == kept.end() ? *kept.begin() + perimeter - c.at : *after - c.at;
+        const double to_before = after == kept.begin() ? c.at + perimeter - *kept.rbegin() : c.at - *std::prev(after);
+        near = (std::min)(to_after, to_before) < shortest;
+      }
+      if(near && c.may_slide)
+        kind[std::size_t(c.v)] = Vertex_kind::feature_vertex;
+      else
+        kept.insert(c.at);
+    }
+  }
 }
 
 // The feature polylines of the reference mesh, and positions on them: a point at parameter t of

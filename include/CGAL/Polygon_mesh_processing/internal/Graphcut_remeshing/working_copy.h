@@ -102,7 +102,8 @@ public:
   // turns by more than the upper bound is a corner, and so is a strong crease that turns by more
   // than `crease_turn_angle` (see classify_vertices()); with `follow_creases`, fading creases run on
   // (see detect_sharp_edges()); sharp lines shorter than `shortest_sharp_line` are dropped (see
-  // drop_short_sharp_lines()).
+  // drop_short_sharp_lines()), and so are the border's corners closer than it to a stronger one
+  // (see merge_close_border_corners()).
   template <typename EdgeConstrainedMap>
   std::pair<std::vector<char>, std::vector<Vertex_kind> > features(const Work_mesh& work, const EdgeConstrainedMap& ecm,
                                                                    const std::pair<double, double>& sharp_bounds,
@@ -127,6 +128,8 @@ public:
         }
     std::vector<Vertex_kind> kind =
       classify_vertices(work, feature_edge, m_constrained_vertex, sharp_bounds.second, crease_turn_angle);
+    if(shortest_sharp_line > 0)
+      merge_close_border_corners(work, feature_edge, m_constrained_vertex, shortest_sharp_line, kind);
     return {std::move(feature_edge), std::move(kind)};
   }
 
