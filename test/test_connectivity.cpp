@@ -552,6 +552,63 @@ TEST(Connectivity_pass, ResamplingBringsTheEdgesToTheirTargets)
     }
 }
 
+// With a target length asked for, a collapse keeps what it removes near the new triangles: on a
+// flat grid with single raised vertices (bumps 0.2 times the grid's spacing high, 11 degrees of
+// slope: no sharp edge), asked for four times the spacing with a tolerance of 0.6 times a bump's
+// height, every collapse the re-sampling would make leaves the removed vertex (and the kept one
+// where it was, when it moves) within the tolerance of a new triangle (widened as the square of
+// its longest edge over the target). The new triangles' centroids alone stay within it while a
+// bump between them is cut off. Several scales.
+TEST(Connectivity_pass, CoarseCollapsesKeepWhatTheyRemoveNearTheNewTriangles)
+{
+  for(double scale : {1e-3, 1.0, 1e3})
+  {
+    const double spacing = scale / 11, height = 0.2 * spacing;
+    const std::set<std::pair<std::size_t, std::size_t> > bumps{{3, 3}, {3, 8}, {8, 3}, {8, 8}, {5, 6}};
+    const Work grid = to_work_mesh(make_grid(12, 12, [&](std::size_t i, std::size_t j) {
+      return Point(spacing * double(i), spacing * double(j), bumps.count({i, j}) ? height : 0.0);
+    }));
+    Pass_setup s(grid);
+    ASSERT_EQ(s.input_feature_edges.size(), 44u) << "scale " << scale; // the border's only
+    s.sizing.mean_length = 4 * spacing;
+    s.sizing.tolerance = 0.6 * height;
+    s.sizing.corner_angle = 35;
+    s.sizing.target.assign(grid.num_vertices(), 4 * spacing);
+    s.sizing.target_asked_for = s.sizing.into_lines = true;
+    GR::Connectivity_optimizer optimizer = s.optimizer_with_features();
+    std::size_t made = 0;
+    for(auto e : s.mesh.edges())
+    {
+      GR::Connectivity_optimizer::Collapse c;
+      if(!(optimizer.resampling_collapse_gain(e, c) > 0))
+        continue;
+      ++made;
+      const GR::Vector_3d was = s.point(c.kept);
+      double gone_excess = std::numeric_limits<double>::infinity(), was_excess = was == c.point ? 0 : gone_excess;
+      for(auto u : {c.removed, c.kept})
+        for(auto g : halfedges_around_target(s.mesh.halfedge(u), s.mesh))
+        {
+          const auto p = s.mesh.source(g), q = s.mesh.target(s.mesh.next(g));
+          if(s.mesh.is_border(g) || p == c.removed || p == c.kept || q == c.removed || q == c.kept)
+            continue;
+          const double longest =
+            (std::max)({(c.point - s.point(p)).norm(), (c.point - s.point(q)).norm(), (s.point(p) - s.point(q)).norm()});
+          const double ratio = longest / (4 * spacing);
+          const double allowed = s.sizing.tolerance * (std::max)(1.0, ratio * ratio);
+          std::array<double, 3> barycentric;
+          auto excess = [&](const GR::Vector_3d& x) {
+            return (x - GR::closest_point_on_triangle(x, c.point, s.point(q), s.point(p), barycentric)).norm() - allowed;
+          };
+          gone_excess = (std::min)(gone_excess, excess(s.point(c.removed)));
+          was_excess = (std::min)(was_excess, excess(was));
+        }
+      EXPECT_LE((std::max)(gone_excess, was_excess), 1e-9 * scale)
+        << "scale " << scale << ": collapse of " << c.removed << " into " << c.kept;
+    }
+    EXPECT_GT(made, grid.number_of_edges() / 4) << "scale " << scale;
+  }
+}
+
 TEST(Connectivity_pass, KeepsTheGuaranteesOnSeveralMeshes)
 {
   for(const Named_mesh& input : scrambled_meshes())

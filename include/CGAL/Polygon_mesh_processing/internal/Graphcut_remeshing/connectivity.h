@@ -505,9 +505,14 @@ public:
   // The smallest angle of the triangles around c.removed and c.kept that stay, with both at
   // c.point, or -1 when one of them is not acceptable, leaves the reference by more than the
   // tolerance or has an edge longer than 4/3 of its target (a split would undo the collapse).
+  // When the user asked for a density, the removed vertex, and the kept one where it was when it
+  // moves, must also stay within the tolerance of one of the new triangles: their centroids alone
+  // may keep near the surface while a tip or a rim between them is cut off.
   double collapsed_smallest_angle(const Collapse& c) const
   {
     double smallest = pi;
+    const Vector_3d gone = position(c.removed), was = position(c.kept);
+    bool gone_covered = !m_sizing.target_asked_for, was_covered = !m_sizing.target_asked_for || was == c.point;
     for(Vertex u : {c.removed, c.kept})
       for(Halfedge g : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
       {
@@ -519,12 +524,16 @@ public:
         const Vector_3d pp = position(p), pq = position(q);
         const double target = edge_length_target(c.kept, p);
         const double longest = (std::max)({(c.point - pp).norm(), (c.point - pq).norm(), (pp - pq).norm()});
+        const double allowed = tolerance_for(longest, target);
         if((c.point - pp).norm() > 4.0 / 3.0 * target || !acceptable(c.point, pq, pp, u, area_vector(position(u), pq, pp)) ||
-           distance_to_reference((c.point + pp + pq) / 3, c.kept) > tolerance_for(longest, target))
+           distance_to_reference((c.point + pp + pq) / 3, c.kept) > allowed)
           return -1;
         smallest = (std::min)(smallest, smallest_angle(c.point, pq, pp));
+        std::array<double, 3> barycentric;
+        gone_covered = gone_covered || (gone - closest_point_on_triangle(gone, c.point, pq, pp, barycentric)).norm() <= allowed;
+        was_covered = was_covered || (was - closest_point_on_triangle(was, c.point, pq, pp, barycentric)).norm() <= allowed;
       }
-    return smallest;
+    return gone_covered && was_covered ? smallest : -1;
   }
 
   double resampling_collapse_gain(Edge e, Collapse& c) const
