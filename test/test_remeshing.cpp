@@ -422,10 +422,11 @@ TEST(GraphcutRemeshing, TargetLengthSetsTheDensity)
 // Four times coarser than the input, the count comes near isotropic_remeshing's at the same length
 // (edges of 35 degrees or more constrained): on triceratops the sharp lines of its fine sampling,
 // short at that scale, once held a quarter more vertices; on ALSTOM_TEST4, a CAD strip, the regions
-// left alone after a pass had made triangles intersect once held 3.5 times as many.
+// left alone after a pass had made triangles intersect once held 3.5 times as many, and its
+// borders' close corners and vertices in a single triangle 1.17 times (issue 24's bar is 1.15).
 TEST(GraphcutRemeshing, CoarseTargetComesNearIsotropicRemeshingsCount)
 {
-  for(const auto& [name, bound] : {std::make_pair("triceratops", 1.2), std::make_pair("ALSTOM_TEST4", 1.5)})
+  for(const auto& [name, bound] : {std::make_pair("triceratops", 1.2), std::make_pair("ALSTOM_TEST4", 1.15)})
   {
     const Mesh input = load_sample_mesh(name);
     const double target = 4 * mean_edge_length(input);

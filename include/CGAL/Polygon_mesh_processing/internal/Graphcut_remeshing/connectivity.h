@@ -569,18 +569,20 @@ public:
       return 0;
     if(feature && trials.empty())
       return 0;
-    // The triangles on e go; their far vertices keep three edges, and no two feature edges merge
-    // (the free end of a collapse into a line has none). When the user asked for a density, a
-    // feature edge's triangle may have one feature edge beside it, which the merged edge carries
-    // on: a line leaving a corner next to a short segment (fandisk at four times its mean edge
-    // length kept 15 such segments shorter than half their target), or the next segment of the
-    // line at an ear.
+    // The triangles on e go; their far vertices keep three edges (two on a border, where one
+    // triangle is enough, when the user asked for a density: a strip two triangles wide is made
+    // of such vertices), and no two feature edges merge (the free end of a collapse into a line
+    // has none). When the user asked for a density, a feature edge's triangle may have one
+    // feature edge beside it, which the merged edge carries on: a line leaving a corner next to a
+    // short segment (fandisk at four times its mean edge length kept 15 such segments shorter
+    // than half their target), or the next segment of the line at an ear.
     for(Halfedge g : {h, m_mesh.opposite(h)})
       if(!m_mesh.is_border(g))
       {
         const int wings = (m_state.feature_edge[std::size_t(m_mesh.edge(m_mesh.next(g)))] ? 1 : 0) +
                           (m_state.feature_edge[std::size_t(m_mesh.edge(m_mesh.prev(g)))] ? 1 : 0);
-        if(m_mesh.degree(m_mesh.target(m_mesh.next(g))) < 4 ||
+        const Vertex far = m_mesh.target(m_mesh.next(g));
+        if(m_mesh.degree(far) < (m_sizing.into_lines && m_mesh.is_border(far) ? 3u : 4u) ||
            (!into_feature && wings > (m_sizing.into_lines && feature ? 1 : 0)))
           return 0;
       }
