@@ -473,6 +473,48 @@ TEST(GraphcutRemeshing, CoarseTargetResamplesFeatureLines)
     }
 }
 
+// A user's constrained edges are never collapsed (nor split) at a coarse target, also where their
+// run goes on as a sharp line whose segments collapse: a run of them in the middle of each edge of
+// a box.
+TEST(GraphcutRemeshing, CoarseTargetKeepsTheUsersConstrainedEdges)
+{
+  for(double scale : {1e-3, 1.0, 1e3})
+  {
+    Mesh m = jittered_box(scale, scale, scale, 10, 3);
+    auto ecm = m.add_property_map<Mesh::Edge_index, bool>("e:constrained", false).first;
+    // Where p is on an edge of the box: its coordinate along that edge, else -1.
+    const auto along_box_edge = [&](const Point& p) {
+      int bounded = 0;
+      double free = -1;
+      for(double x : {p.x(), p.y(), p.z()})
+        if(x == 0 || x == scale)
+          ++bounded;
+        else
+          free = x;
+      return bounded == 2 ? free : -1.0;
+    };
+    std::size_t run = 0;
+    for(auto e : edges(m))
+    {
+      const Point &p = m.point(source(e, m)), &q = m.point(target(e, m));
+      const double s = along_box_edge(p), t = along_box_edge(q);
+      const bool same_edge = (p.x() == q.x()) + (p.y() == q.y()) + (p.z() == q.z()) == 2;
+      if(same_edge && (std::min)(s, t) > 0.3 * scale && (std::max)(s, t) < 0.7 * scale)
+      {
+        ecm[e] = true;
+        ++run;
+      }
+    }
+    ASSERT_GE(run, 24u);
+    PMP::graphcut_isotropic_remeshing(faces(m), 0.16 * scale, m,
+                                      CGAL::parameters::number_of_iterations(30).edge_is_constrained_map(ecm));
+    std::size_t constrained = 0;
+    for(auto e : edges(m))
+      constrained += ecm[e] ? 1 : 0;
+    EXPECT_EQ(constrained, run) << "scale " << scale;
+  }
+}
+
 // Where the input's triangles intersect, the remesher works as elsewhere: two overlapping spheres
 // refined to half their mean edge length get about four times the vertices in the zones around the
 // curve where they cross (the boxes of the intersecting pairs, grown by the mean edge length; about

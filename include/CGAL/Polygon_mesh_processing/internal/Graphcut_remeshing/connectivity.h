@@ -398,7 +398,7 @@ public:
     Vertex removed, kept;
     Vector_3d point; // where the kept vertex goes
     bool to_line_midpoint = false; // the kept vertex slides to `on_line`, the point of its line
-    Location on_line;
+    Location on_line{};
   };
 
   // How many feature edges v has, and the far end of one that is not e.
@@ -431,6 +431,9 @@ public:
       const Vertex r = ends.first, k = ends.second;
       Vertex x;
       if(m_state.kind[std::size_t(r)] != Vertex_kind::feature_vertex || feature_degree(r, e, x) != 2 || x == k)
+        continue;
+      // A user's constrained edge keeps its ends.
+      if(m_state.feature_edge[std::size_t(m_mesh.edge(m_mesh.halfedge(r, x)))] == Tracking_state::constrained_edge)
         continue;
       const Vector_3d pr = position(r), pk = position(k), px = position(x);
       const double turn = (pr - pk).normalized().dot((px - pr).normalized());
@@ -505,9 +508,10 @@ public:
   // The smallest angle of the triangles around c.removed and c.kept that stay, with both at
   // c.point, or -1 when one of them is not acceptable, leaves the reference by more than the
   // tolerance or has an edge longer than 4/3 of its target (a split would undo the collapse).
-  // When the user asked for a density, the removed vertex, and the kept one where it was when it
-  // moves, must also stay within the tolerance of one of the new triangles: their centroids alone
-  // may keep near the surface while a tip or a rim between them is cut off.
+  // When the user asked for a length (whose tolerance grows with the triangles, see
+  // tolerance_for()), the removed vertex, and the kept one where it was when it moves, must also
+  // stay within the tolerance of one of the new triangles: their centroids alone may keep near
+  // the surface while a tip or a rim between them is cut off.
   double collapsed_smallest_angle(const Collapse& c) const
   {
     double smallest = pi;
@@ -622,8 +626,9 @@ public:
     }
     // The two edges of a triangle on e merge into one. Euler::collapse_edge keeps the kept
     // vertex's on the side of e's halfedge and the removed vertex's on the other side, so a
-    // feature edge of the kept vertex (a collapse into a feature line) may lose its index: the
-    // merged edge takes its flag and hint.
+    // feature edge beside e (the kept vertex's, where a free end collapses into a line, or the
+    // removed vertex's, where a feature edge collapses beside another line) may lose its index:
+    // the merged edge takes its flag and hint.
     struct Wing
     {
       Vertex far;

@@ -27,6 +27,10 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Graphcut_remeshing {
 
+// Values of a vector of feature edges, by edge; 0 for an edge that is not one.
+constexpr char sharp_or_border_feature_edge = 1;
+constexpr char constrained_feature_edge = 2; // the user's: kept as it is, never split
+
 // Angle between the normals of the two faces of an edge, in degrees (0 where flat); 0 for a
 // border edge.
 template <typename Mesh>
@@ -310,7 +314,7 @@ void merge_close_border_corners(const Mesh& m, const std::vector<char>& feature_
     for(auto h : halfedges_around_target(m.halfedge(v), m))
     {
       count += feature_edge[std::size_t(m.edge(h))] ? 1 : 0;
-      user += feature_edge[std::size_t(m.edge(h))] == 2 ? 1 : 0; // Tracking_state::constrained_edge
+      user += feature_edge[std::size_t(m.edge(h))] == constrained_feature_edge ? 1 : 0;
     }
     return count == 2 && user == 0 && !constrained_vertex[std::size_t(v)];
   };

@@ -29,8 +29,8 @@ namespace Graphcut_remeshing {
 struct Tracking_state
 {
   // Values of `feature_edge`.
-  static constexpr char sharp_or_border_edge = 1;
-  static constexpr char constrained_edge = 2; // the user's: kept as it is, never split
+  static constexpr char sharp_or_border_edge = sharp_or_border_feature_edge;
+  static constexpr char constrained_edge = constrained_feature_edge;
 
   std::vector<char> feature_edge;            // by edge: 0, or one of the values above
   std::vector<Vertex_kind> kind;             // by vertex
