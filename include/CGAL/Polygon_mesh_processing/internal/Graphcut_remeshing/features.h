@@ -302,7 +302,7 @@ std::vector<Vertex_kind> classify_vertices(const Mesh& m, const std::vector<char
 // times its mean edge length). A corner that is one only because the border turns there (not a
 // junction, not the user's) slides instead when a corner that turns more, or one that is not of
 // that kind, is kept closer than `shortest` along its border; the stronger turns are decided
-// first.
+// first, and of two equal turns the one met first along the border (from any of its halfedges).
 template <typename Mesh>
 void merge_close_border_corners(const Mesh& m, const std::vector<char>& feature_edge,
                                 const std::vector<char>& constrained_vertex, double shortest,
