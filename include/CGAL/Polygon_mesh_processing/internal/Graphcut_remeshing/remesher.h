@@ -326,7 +326,8 @@ private:
     }
     if(options.resampling)
     {
-      Sizing sizing = curvature_sizing(reference, feature_edge, length, options.sharp_angle_bounds.second);
+      const double longest = options.target_edge_length > 0 ? longest_to_asked_target : longest_to_mean_length;
+      Sizing sizing = curvature_sizing(reference, feature_edge, length, options.sharp_angle_bounds.second, longest);
       sizing.target_asked_for = sizing.into_lines = options.target_edge_length > 0;
       return sizing;
     }

@@ -145,6 +145,14 @@ inline void grade_sizing(const Work_mesh& m, double gradation, std::vector<doubl
 // Neighbouring target lengths differ by at most this times the distance between them.
 constexpr double sizing_gradation = 0.5;
 
+// The longest edges of the count-matched field (curvature_sizing()), in target lengths: at the
+// input's own density, twice its mean edge length in the flat parts; with a length asked for,
+// little beyond it, as isotropic_remeshing() keeps its edges below 4/3 of its target. At a coarse
+// target, edges twice as long in the parts that look flat left the short ones crowded at the
+// lines, and cut across the hollows that the coarse sampling hides.
+constexpr double longest_to_mean_length = 2;
+constexpr double longest_to_asked_target = 1.25;
+
 // The sizing field of an error bound (graphcut_parameters::sizing_tolerance), as CGAL's
 // Adaptive_sizing_field: at each vertex of the reference `m` the edge length whose equilateral
 // triangles keep within `tolerance` of a sphere of the curvature radius at their centroids,
@@ -167,12 +175,12 @@ inline Sizing tolerance_sizing(const Work_mesh& m, const std::vector<char>& feat
 }
 
 // The sizing field of the re-sampling connectivity stage on the reference `m`: at each vertex the
-// chord length that keeps within a tolerance of the curvature radius, between half and twice the
-// mean length, graded; the tolerance is chosen so that the field asks for as many triangles as the
+// chord length that keeps within a tolerance of the curvature radius, between half and `longest`
+// times the mean length, graded; the tolerance is chosen so that the field asks for as many triangles as the
 // mean length would everywhere (sum of area / l^2), so that the vertex count stays the input's
 // while the curved parts get the short edges and the flat parts the long ones.
 inline Sizing curvature_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double mean_length,
-                               double corner_angle)
+                               double corner_angle, double longest)
 {
   const std::vector<double> radius = smooth_edge_radii(m, feature_edge, corner_angle);
   const std::vector<double> area = vertex_areas(m);
@@ -189,7 +197,7 @@ inline Sizing curvature_sizing(const Work_mesh& m, const std::vector<char>& feat
     {
       const double l = std::sqrt(6 * tolerance * radius[std::size_t(v)]); // +inf when flat
       double& t = sizing.target[std::size_t(v)];
-      t = (std::max)(0.5 * mean_length, (std::min)(2 * mean_length, l));
+      t = (std::max)(0.5 * mean_length, (std::min)(longest * mean_length, l));
       count += area[std::size_t(v)] / (t * t);
     }
     return count;
