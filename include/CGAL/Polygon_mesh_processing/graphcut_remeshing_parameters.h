@@ -218,8 +218,8 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(do_connectivity_optimization)
  * sizing field, as `isotropic_remeshing()` does: edges longer than 4/3 of their target length are
  * split and shorter than 4/5 collapsed, also where the surface is curved and along feature lines
  * and borders, as long as the new triangles stay near the input. The target lengths follow the
- * input's curvature, between half and twice its mean edge length, for about as many triangles as
- * the mean length would make.
+ * input's curvature, between half and twice its mean edge length (half and 5/4 of a target length
+ * asked for), for about as many triangles as the mean length would make.
  *
  * \tparam T `bool`
  * \param value whether to re-sample
