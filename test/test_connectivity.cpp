@@ -292,7 +292,7 @@ std::vector<Named_mesh> scrambled_meshes()
   unsigned seed = 1;
   for(Named_mesh& m : meshes)
   {
-    const std::vector<char> sharp = GR::detect_sharp_edges(m.mesh, 20, 35, GR::longest_to_mean_length);
+    const std::vector<char> sharp = GR::detect_sharp_edges(m.mesh, 20, 35);
     scramble(m.mesh, sharp, seed++, m.mesh.number_of_edges());
   }
   return meshes;
@@ -415,7 +415,7 @@ TEST(Features, ShortSharpLinesAreDroppedButNotAtCones)
     EXPECT_FALSE(kept(spur, finer)) << name;
 
     const Work box = to_work_mesh(jittered_box(scale, 2 * scale, 3 * scale, 3, 7));
-    std::vector<char> box_sharp = GR::detect_sharp_edges(box, 20, 35, GR::longest_to_mean_length);
+    std::vector<char> box_sharp = GR::detect_sharp_edges(box, 20, 35);
     const std::vector<char> box_before = box_sharp;
     GR::drop_short_sharp_lines(box, 100 * scale, box_sharp);
     EXPECT_EQ(std::count(box_before.begin(), box_before.end(), 1), 36) << name; // 12 edges in 3 each
@@ -451,7 +451,7 @@ TEST(Features, CloseBorderCornersMergeAtCoarseTargets)
     for(auto e : grid.edges())
       border[std::size_t(e)] = grid.is_border(e) ? 1 : 0;
     auto corners = [&](const std::vector<char>& constrained, double shortest) {
-      std::vector<GR::Vertex_kind> kind = GR::classify_vertices(grid, border, constrained, 35, GR::longest_to_mean_length);
+      std::vector<GR::Vertex_kind> kind = GR::classify_vertices(grid, border, constrained, 35);
       EXPECT_EQ(std::count(kind.begin(), kind.end(), GR::Vertex_kind::fixed_vertex), 8) << name;
       GR::merge_close_border_corners(grid, border, constrained, shortest, kind);
       std::set<std::size_t> fixed;
@@ -486,7 +486,8 @@ TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)
   for(const Work* m : {&bent, &sphere})
   {
     const double mean = GR::mean_edge_length(*m);
-    const GR::Sizing sizing = GR::curvature_sizing(*m, Pass_setup::features_of(*m, true), mean, 35, GR::longest_to_mean_length);
+    const GR::Sizing sizing = GR::curvature_sizing(*m, Pass_setup::features_of(*m, true), mean, 35,
+                                                   GR::longest_to_mean_length);
     ASSERT_TRUE(sizing.resamples());
     const std::vector<double> area = GR::vertex_areas(*m);
     double budget = 0, spent = 0;
@@ -527,7 +528,8 @@ TEST(Connectivity_pass, ResamplingBringsTheEdgesToTheirTargets)
     {
       Pass_setup s(input.mesh);
       const double mean = GR::mean_edge_length(s.reference_mesh);
-      s.sizing = GR::curvature_sizing(s.reference_mesh, s.reference_feature_edge, factor * mean, 35, GR::longest_to_mean_length);
+      s.sizing = GR::curvature_sizing(s.reference_mesh, s.reference_feature_edge, factor * mean, 35,
+                                      GR::longest_to_mean_length);
       const std::string name = input.name + " x" + std::to_string(factor);
       for(int pass = 0; pass < 4; ++pass)
       {
@@ -1071,7 +1073,7 @@ TEST(GraphcutRemeshing, ConnectivityKeepsTheGuarantees)
       << c.name;
     // Corners (three or more sharp edges, turns of strong creases) stay where they were, as
     // vertices of the output; re-sampling keeps the turns beyond the upper bound only.
-    const std::vector<char> sharp = GR::detect_sharp_edges(w, 20, 35, GR::longest_to_mean_length);
+    const std::vector<char> sharp = GR::detect_sharp_edges(w, 20, 35);
     const std::vector<GR::Vertex_kind> kind =
       GR::classify_vertices(w, sharp, std::vector<char>(w.num_vertices(), 0), theta_true,
                             resampling ? theta_true : GR::strong_crease_turn_angle);

@@ -176,9 +176,9 @@ inline Sizing tolerance_sizing(const Work_mesh& m, const std::vector<char>& feat
 
 // The sizing field of the re-sampling connectivity stage on the reference `m`: at each vertex the
 // chord length that keeps within a tolerance of the curvature radius, between half and `longest`
-// times the mean length, graded; the tolerance is chosen so that the field asks for as many triangles as the
-// mean length would everywhere (sum of area / l^2), so that the vertex count stays the input's
-// while the curved parts get the short edges and the flat parts the long ones.
+// times the mean length, graded; the tolerance is chosen so that the field asks for as many
+// triangles as the mean length would everywhere (sum of area / l^2), so that the vertex count
+// stays the input's while the curved parts get the short edges and the flat parts the long ones.
 inline Sizing curvature_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double mean_length,
                                double corner_angle, double longest)
 {
