@@ -6,7 +6,9 @@
 // positions. Sharp, border and constrained edges are never flipped or collapsed and no collapse
 // or relaxation touches a vertex on one; a long sharp edge may be split at a point of its
 // reference polyline. With a re-sampling sizing (`resampling`), edges are split and collapsed to
-// their target lengths first, also where the surface is curved and along feature lines.
+// their target lengths first, also where the surface is curved and along feature lines; with a
+// length asked for coarser than the input, the reference vertices farthest from the mesh then get
+// vertices.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_CONNECTIVITY_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_CONNECTIVITY_H
@@ -21,8 +23,16 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/version.h>
+#if CGAL_VERSION_NR >= 1060000000
+#include <CGAL/AABB_traits_3.h>
+#else
+#include <CGAL/AABB_traits.h>
+#endif
 
 #include <boost/container/small_vector.hpp>
 
@@ -95,6 +105,13 @@ public:
   // shape none needs to; more folds a thin triangle along a crease or a stretched part, where the
   // reference's normal alone can be either side's.
   static constexpr double min_turn_cosine = 0.5;
+  // With a coarse length asked for, the reference vertices this share of the farthest one's
+  // distance from the mesh, or farther, get a vertex (cover_reference()).
+  static constexpr double cover_share_of_worst = 0.8;
+  // ... and as far as cover_outlier_ratio times the distance that this share of the reference
+  // vertices keep within.
+  static constexpr double cover_typical_rank = 0.9;
+  static constexpr double cover_outlier_ratio = 2;
   // The valence up to which a vertex split tries every way to cut the ring in two.
   static constexpr std::size_t max_exhaustive_split = 12;
 
@@ -117,7 +134,8 @@ public:
 
   // One pass of section 3: flips, splits, collapses, vertex splits, then relaxation. When the
   // sizing re-samples the surface, the splits and collapses bring every edge within 4/5 and 4/3 of
-  // its target first, as CGAL's incremental remesher does, and the flips follow.
+  // its target first, as CGAL's incremental remesher does, the reference's farthest vertices get
+  // vertices when the length asked for is coarser than the input's, and the flips follow.
   Connectivity_counts run()
   {
     Connectivity_counts counts;
@@ -125,6 +143,8 @@ public:
     {
       counts.splits = split_edges();
       counts.collapses = collapse_edges();
+      if(m_sizing.covers_reference)
+        counts.splits += cover_reference();
       counts.flips = flip_edges();
     }
     else
@@ -275,31 +295,7 @@ public:
               [&](Edge e) {
                 const Halfedge h = face_side(e);
                 const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
-                const char feature = m_state.feature_edge[std::size_t(e)];
-                // The new halfedge points from a to the new vertex; then cut the faces (one on a
-                // border).
-                const Halfedge hn = CGAL::Euler::split_edge(h, m_mesh);
-                const Vertex v = m_mesh.target(hn);
-                m_mesh.point(v) = Work_kernel::Point_3(p.x(), p.y(), p.z());
-                CGAL::Euler::split_face(hn, m_mesh.next(m_mesh.next(hn)), m_mesh);
-                const Halfedge on = m_mesh.opposite(hn);
-                if(!m_mesh.is_border(on))
-                  CGAL::Euler::split_face(m_mesh.prev(on), m_mesh.next(on), m_mesh);
-                fit_arrays();
-                for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
-                  m_state.feature_edge[std::size_t(m_mesh.edge(g))] = 0;
-                if(feature)
-                {
-                  // Both halves of a sharp edge are sharp; the new vertex slides on its polyline.
-                  m_state.feature_edge[std::size_t(e)] = feature;
-                  m_state.feature_edge[std::size_t(m_mesh.edge(hn))] = feature;
-                  m_state.edge_hint[std::size_t(m_mesh.edge(hn))] = m_state.edge_hint[std::size_t(e)];
-                  m_state.location[std::size_t(v)] = on_feature;
-                }
-                bind_new_vertex(v, a, feature ? Vertex_kind::feature_vertex : Vertex_kind::free_vertex);
-                for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
-                  if(!m_mesh.is_border(g))
-                    m_state.face_hint[std::size_t(m_mesh.face(g))] = m_state.vertex_hint[std::size_t(v)];
+                const Vertex v = split_edge_at(h, p, on_feature);
                 ++done;
                 std::vector<Vertex> touched{{a, b, v}};
                 for(Vertex w : vertices_around_target(m_mesh.halfedge(v), m_mesh))
@@ -307,6 +303,167 @@ public:
                 return touched;
               });
     return done;
+  }
+
+  // Splits the edge of h (h on a face) by a new vertex at p, on_feature on the edge's polyline
+  // when it is a feature edge, and cuts the faces (one on a border); returns the new vertex.
+  Vertex split_edge_at(Halfedge h, const Vector_3d& p, const Location& on_feature)
+  {
+    const Edge e = m_mesh.edge(h);
+    const Vertex a = m_mesh.source(h);
+    const char feature = m_state.feature_edge[std::size_t(e)];
+    // The new halfedge points from a to the new vertex.
+    const Halfedge hn = CGAL::Euler::split_edge(h, m_mesh);
+    const Vertex v = m_mesh.target(hn);
+    m_mesh.point(v) = Work_kernel::Point_3(p.x(), p.y(), p.z());
+    CGAL::Euler::split_face(hn, m_mesh.next(m_mesh.next(hn)), m_mesh);
+    const Halfedge on = m_mesh.opposite(hn);
+    if(!m_mesh.is_border(on))
+      CGAL::Euler::split_face(m_mesh.prev(on), m_mesh.next(on), m_mesh);
+    fit_arrays();
+    for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      m_state.feature_edge[std::size_t(m_mesh.edge(g))] = 0;
+    if(feature)
+    {
+      // Both halves of a sharp edge are sharp; the new vertex slides on its polyline.
+      m_state.feature_edge[std::size_t(e)] = feature;
+      m_state.feature_edge[std::size_t(m_mesh.edge(hn))] = feature;
+      m_state.edge_hint[std::size_t(m_mesh.edge(hn))] = m_state.edge_hint[std::size_t(e)];
+      m_state.location[std::size_t(v)] = on_feature;
+    }
+    bind_new_vertex(v, a, feature ? Vertex_kind::feature_vertex : Vertex_kind::free_vertex);
+    for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      if(!m_mesh.is_border(g))
+        m_state.face_hint[std::size_t(m_mesh.face(g))] = m_state.vertex_hint[std::size_t(v)];
+    return v;
+  }
+
+  // --- covering: vertices where the mesh has cut off a tip or a rim of the reference ---
+
+  // Beyond the paper: the data terms measure how far the mesh is from the reference, not how far
+  // the reference is from the mesh, and the relocation may slide the vertex of a thin tip or rim
+  // down its side: the triangles then cut the tip off while every vertex and centroid stays near
+  // the surface. When the user asked for a length coarser than the input's, the reference vertices
+  // that stand out, within cover_share_of_worst of the farthest from the mesh and far beyond most,
+  // each get a vertex, at themselves, the farthest first and one per neighbourhood. Returns the
+  // number of vertices added.
+  std::size_t cover_reference()
+  {
+    using Primitive = CGAL::AABB_face_graph_triangle_primitive<Work_mesh>;
+#if CGAL_VERSION_NR >= 1060000000
+    using Tree = CGAL::AABB_tree<CGAL::AABB_traits_3<Work_kernel, Primitive> >;
+#else
+    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Work_kernel, Primitive> >;
+#endif
+    Tree tree(faces(m_mesh).first, faces(m_mesh).second, m_mesh);
+    tree.build();
+    tree.accelerate_distance_queries();
+    const Work_mesh& reference = m_reference.mesh();
+    std::vector<double> distance(reference.num_vertices(), 0);
+    std::vector<Face> nearest(reference.num_vertices());
+    for_each_vertex(reference, [&](Vertex r) {
+      const Vector_3d x = m_reference.point(r);
+      const auto hit = tree.closest_point_and_primitive(Work_kernel::Point_3(x.x(), x.y(), x.z()));
+      distance[std::size_t(r)] = (to_vector(hit.first) - x).norm();
+      nearest[std::size_t(r)] = hit.second;
+    });
+    if(distance.empty())
+      return 0;
+    // What stands out: on a sphere or a tube every chord leaves the surface alike, and vertices
+    // there would only make the mesh denser than the length asked for.
+    const double worst = *std::max_element(distance.begin(), distance.end());
+    std::vector<double> sorted = distance;
+    const std::size_t typical_rank = std::size_t(cover_typical_rank * double(sorted.size() - 1));
+    std::nth_element(sorted.begin(), sorted.begin() + typical_rank, sorted.end());
+    const double bound = (std::max)(cover_share_of_worst * worst, cover_outlier_ratio * sorted[typical_rank]);
+    std::vector<Vertex> far;
+    for(Vertex r : reference.vertices())
+      if(distance[std::size_t(r)] > 0 && distance[std::size_t(r)] >= bound)
+        far.push_back(r);
+    std::stable_sort(far.begin(), far.end(),
+                     [&](Vertex r, Vertex s) { return distance[std::size_t(r)] > distance[std::size_t(s)]; });
+    std::vector<char> changed_near(m_mesh.num_faces(), 0);
+    std::size_t added = 0;
+    for(Vertex r : far)
+    {
+      if(changed_near[std::size_t(nearest[std::size_t(r)])])
+        continue;
+      const Vertex v = cover(nearest[std::size_t(r)], m_reference.point(r));
+      if(v == Vertex())
+        continue;
+      ++added;
+      changed_near.resize(m_mesh.num_faces(), 0);
+      for(Vertex w : vertices_around_target(m_mesh.halfedge(v), m_mesh))
+        for(Halfedge g : halfedges_around_target(m_mesh.halfedge(w), m_mesh))
+          if(!m_mesh.is_border(g))
+            changed_near[std::size_t(m_mesh.face(g))] = 1;
+    }
+    return added;
+  }
+
+  // A vertex at x for the triangle f: on the side of f whose split keeps the best triangles, or
+  // inside f; none (a null vertex) when no way keeps acceptable triangles.
+  Vertex cover(Face f, const Vector_3d& x)
+  {
+    const Halfedge h0 = m_mesh.halfedge(f);
+    for(Halfedge h : halfedges_around_face(h0, m_mesh))
+      if(is_frozen(m_mesh.target(h)))
+        return Vertex();
+    double best = 0;
+    Halfedge best_h;
+    for(Halfedge h : halfedges_around_face(h0, m_mesh))
+    {
+      if(m_state.feature_edge[std::size_t(m_mesh.edge(h))])
+        continue;
+      const Halfedge o = m_mesh.opposite(h);
+      const Vertex a = m_mesh.source(h), b = m_mesh.target(h), c = m_mesh.target(m_mesh.next(h));
+      const Vector_3d pa = position(a), pb = position(b), pc = position(c);
+      const Vector_3d abc = area_vector(pa, pb, pc);
+      if(!acceptable(pa, x, pc, a, abc) || !acceptable(x, pb, pc, b, abc))
+        continue;
+      double smallest = (std::min)(smallest_angle(pa, x, pc), smallest_angle(x, pb, pc));
+      if(!m_mesh.is_border(o))
+      {
+        const Vector_3d pd = position(m_mesh.target(m_mesh.next(o)));
+        const Vector_3d bad = area_vector(pb, pa, pd);
+        if(is_frozen(m_mesh.target(m_mesh.next(o))) || !acceptable(pb, x, pd, b, bad) || !acceptable(x, pa, pd, a, bad))
+          continue;
+        smallest = (std::min)({smallest, smallest_angle(pb, x, pd), smallest_angle(x, pa, pd)});
+      }
+      if(smallest > best)
+      {
+        best = smallest;
+        best_h = h;
+      }
+    }
+    // Inside f: three triangles.
+    {
+      const std::array<Vertex, 3> t = face_vertices(m_mesh, f);
+      const Vector_3d p0 = position(t[0]), p1 = position(t[1]), p2 = position(t[2]);
+      const Vector_3d n = area_vector(p0, p1, p2);
+      if(acceptable(p0, p1, x, t[0], n) && acceptable(p1, p2, x, t[1], n) && acceptable(p2, p0, x, t[2], n))
+      {
+        const double smallest = (std::min)({smallest_angle(p0, p1, x), smallest_angle(p1, p2, x), smallest_angle(p2, p0, x)});
+        if(smallest > best)
+        {
+          const Vertex from = t[0];
+          const Halfedge hv = CGAL::Euler::add_center_vertex(h0, m_mesh);
+          const Vertex v = m_mesh.target(hv);
+          m_mesh.point(v) = Work_kernel::Point_3(x.x(), x.y(), x.z());
+          fit_arrays();
+          for(Halfedge g : halfedges_around_target(hv, m_mesh))
+            m_state.feature_edge[std::size_t(m_mesh.edge(g))] = 0;
+          bind_new_vertex(v, from);
+          for(Halfedge g : halfedges_around_target(hv, m_mesh))
+            if(!m_mesh.is_border(g))
+              m_state.face_hint[std::size_t(m_mesh.face(g))] = m_state.vertex_hint[std::size_t(v)];
+          return v;
+        }
+      }
+    }
+    if(best_h == Halfedge())
+      return Vertex();
+    return split_edge_at(best_h, x, Location());
   }
 
   // --- collapses of short edges in flat regions: the smallest angle must grow ---

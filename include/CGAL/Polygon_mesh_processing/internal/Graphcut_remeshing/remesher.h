@@ -11,7 +11,8 @@
 //       decide by one minimum s-t cut which vertices take their candidate (relocation_cut.h)
 //       if the choice makes triangles intersect, keep their vertices and decide again
 //       in the first phase, every connectivity_period iterations:
-//         flips, splits, collapses, vertex splits, relaxation            (connectivity.h)
+//         flips, splits, collapses, vertices where the reference is far,
+//         vertex splits, relaxation                                      (connectivity.h)
 //
 // The energy of eq. (1) is in energy.h, the reference surface and its frames in
 // reference_surface.h, the feature lines in features.h, the target edge length in sizing.h.
@@ -329,6 +330,7 @@ private:
       const double longest = options.target_edge_length > 0 ? longest_to_asked_target : longest_to_mean_length;
       Sizing sizing = curvature_sizing(reference, feature_edge, length, options.sharp_angle_bounds.second, longest);
       sizing.target_asked_for = sizing.into_lines = options.target_edge_length > 0;
+      sizing.covers_reference = sizing.target_asked_for && length > mean_edge_length(reference);
       return sizing;
     }
     Sizing sizing;

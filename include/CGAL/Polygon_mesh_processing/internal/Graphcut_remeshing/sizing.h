@@ -47,6 +47,11 @@ struct Sizing
   // The user asked for a density (a length, with or without a tolerance): a free vertex may
   // collapse into a feature line (see Connectivity_optimizer::resampling_collapse_gain()).
   bool into_lines = false;
+  // The user asked for a length longer than the input's mean edge length: the triangles span
+  // several reference vertices and may cut a tip between them off, which the connectivity stage
+  // then covers (see Connectivity_optimizer::cover_reference()). At a finer length every reference
+  // vertex is near a vertex of the mesh, and a vertex put there only makes thin triangles.
+  bool covers_reference = false;
 
   bool resamples() const { return !target.empty(); }
 
