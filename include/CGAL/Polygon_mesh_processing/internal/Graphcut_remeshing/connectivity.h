@@ -42,6 +42,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 #include <queue>
 #include <tuple>
@@ -112,6 +113,9 @@ public:
   // vertices keep within.
   static constexpr double cover_typical_rank = 0.9;
   static constexpr double cover_outlier_ratio = 2;
+  // How far from the mesh towards such a vertex the new vertex goes: all the way, else, where its
+  // triangles would fold, part of the way.
+  static constexpr std::array<double, 3> cover_shares{{1.0, 0.75, 0.5}};
   // The valence up to which a vertex split tries every way to cut the ring in two.
   static constexpr std::size_t max_exhaustive_split = 12;
 
@@ -361,10 +365,12 @@ public:
     const Work_mesh& reference = m_reference.mesh();
     std::vector<double> distance(reference.num_vertices(), 0);
     std::vector<Face> nearest(reference.num_vertices());
+    std::vector<Vector_3d> closest(reference.num_vertices());
     for_each_vertex(reference, [&](Vertex r) {
       const Vector_3d x = m_reference.point(r);
       const auto hit = tree.closest_point_and_primitive(Work_kernel::Point_3(x.x(), x.y(), x.z()));
-      distance[std::size_t(r)] = (to_vector(hit.first) - x).norm();
+      closest[std::size_t(r)] = to_vector(hit.first);
+      distance[std::size_t(r)] = (closest[std::size_t(r)] - x).norm();
       nearest[std::size_t(r)] = hit.second;
     });
     if(distance.empty())
@@ -388,7 +394,12 @@ public:
     {
       if(changed_near[std::size_t(nearest[std::size_t(r)])])
         continue;
-      const Vertex v = cover(nearest[std::size_t(r)], m_reference.point(r));
+      // Where a vertex on the tip itself would fold a triangle over, one part of the way to it.
+      const Vector_3d x = m_reference.point(r), y = closest[std::size_t(r)];
+      Vertex v;
+      for(double share : cover_shares)
+        if((v = cover(nearest[std::size_t(r)], y + share * (x - y))) != Vertex())
+          break;
       if(v == Vertex())
         continue;
       ++added;
@@ -421,6 +432,11 @@ public:
       const Vector_3d abc = area_vector(pa, pb, pc);
       if(!acceptable(pa, x, pc, a, abc) || !acceptable(x, pb, pc, b, abc))
         continue;
+      boost::container::small_vector<Halfedge, 4> link{m_mesh.next(h), m_mesh.prev(h)};
+      if(!m_mesh.is_border(o))
+        link.insert(link.end(), {m_mesh.next(o), m_mesh.prev(o)});
+      if(!fan_unfolded(link, x))
+        continue;
       double smallest = (std::min)(smallest_angle(pa, x, pc), smallest_angle(x, pb, pc));
       if(!m_mesh.is_border(o))
       {
@@ -441,7 +457,8 @@ public:
       const std::array<Vertex, 3> t = face_vertices(m_mesh, f);
       const Vector_3d p0 = position(t[0]), p1 = position(t[1]), p2 = position(t[2]);
       const Vector_3d n = area_vector(p0, p1, p2);
-      if(acceptable(p0, p1, x, t[0], n) && acceptable(p1, p2, x, t[1], n) && acceptable(p2, p0, x, t[2], n))
+      if(acceptable(p0, p1, x, t[0], n) && acceptable(p1, p2, x, t[1], n) && acceptable(p2, p0, x, t[2], n) &&
+         fan_unfolded(std::array<Halfedge, 3>{{h0, m_mesh.next(h0), m_mesh.prev(h0)}}, x))
       {
         const double smallest = (std::min)({smallest_angle(p0, p1, x), smallest_angle(p1, p2, x), smallest_angle(p2, p0, x)});
         if(smallest > best)
@@ -464,6 +481,43 @@ public:
     if(best_h == Halfedge())
       return Vertex();
     return split_edge_at(best_h, x, Location());
+  }
+
+  // Whether the triangles (source(g), target(g), x) that an operation makes, one for each halfedge
+  // g of `link` (g on the triangle it replaces), fold (guarantees.h) neither onto each other,
+  // across their edges at x, nor onto the triangles across the g: a vertex placed or moved off the
+  // mesh (on a tip, on a coarse tube) may turn a new triangle over its neighbour. The vertex at x
+  // replaces those of `replaced`; an edge that was folded already or is a feature edge may stay
+  // folded, as the guarantee allows.
+  template <typename Link>
+  bool fan_unfolded(const Link& link, const Vector_3d& x, std::initializer_list<Vertex> replaced = {}) const
+  {
+    const auto exempt = [&](Halfedge h) {
+      return m_state.feature_edge[std::size_t(m_mesh.edge(h))] || is_folded_edge(m_mesh, h);
+    };
+    const auto exempt_at_x = [&](Vertex w) {
+      for(Vertex u : replaced)
+      {
+        const Halfedge h = m_mesh.halfedge(u, w);
+        if(h != Work_mesh::null_halfedge() && exempt(h))
+          return true;
+      }
+      return false;
+    };
+    boost::container::small_vector<Vector_3d, 16> fan;
+    for(Halfedge g : link)
+    {
+      fan.push_back(area_vector(position(m_mesh.source(g)), position(m_mesh.target(g)), x));
+      const Halfedge across = m_mesh.opposite(g);
+      if(!m_mesh.is_border(across) && is_folded_pair(fan.back(), face_area_vector(m_mesh, across)) && !exempt(g))
+        return false;
+    }
+    for(std::size_t k = 0; k < link.size(); ++k)
+      for(std::size_t j = 0; j < link.size(); ++j)
+        if(m_mesh.target(link[k]) == m_mesh.source(link[j]) && is_folded_pair(fan[k], fan[j]) &&
+           !exempt_at_x(m_mesh.target(link[k])))
+          return false;
+    return true;
   }
 
   // --- collapses of short edges in flat regions: the smallest angle must grow ---
@@ -674,6 +728,7 @@ public:
     double smallest = pi;
     const Vector_3d gone = position(c.removed), was = position(c.kept);
     bool gone_covered = !m_sizing.target_asked_for, was_covered = !m_sizing.target_asked_for || was == c.point;
+    boost::container::small_vector<Halfedge, 16> link;
     for(Vertex u : {c.removed, c.kept})
       for(Halfedge g : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
       {
@@ -682,6 +737,7 @@ public:
         const Vertex p = m_mesh.source(g), q = m_mesh.target(m_mesh.next(g));
         if(p == c.removed || p == c.kept || q == c.removed || q == c.kept)
           continue; // one of the triangles that disappear
+        link.push_back(m_mesh.prev(g));
         const Vector_3d pp = position(p), pq = position(q);
         const double target = edge_length_target(c.kept, p);
         const double longest = (std::max)({(c.point - pp).norm(), (c.point - pq).norm(), (pp - pq).norm()});
@@ -694,7 +750,7 @@ public:
         gone_covered = gone_covered || (gone - closest_point_on_triangle(gone, c.point, pq, pp, barycentric)).norm() <= allowed;
         was_covered = was_covered || (was - closest_point_on_triangle(was, c.point, pq, pp, barycentric)).norm() <= allowed;
       }
-    return gone_covered && was_covered ? smallest : -1;
+    return gone_covered && was_covered && fan_unfolded(link, c.point, {c.removed, c.kept}) ? smallest : -1;
   }
 
   double resampling_collapse_gain(Edge e, Collapse& c) const

@@ -78,21 +78,14 @@ inline Topology_summary topology_summary(const Work_mesh& m)
   return s;
 }
 
-// The edges of m whose two triangles turn by more than 120 degrees against each other (folds),
-// leaving out those `skip` flags when given. (Sharp edges are 35 degrees and more: no smooth
-// part turns this much over one edge.)
+// The edges of m whose two triangles are folded onto each other, leaving out those `skip` flags
+// when given.
 inline std::size_t folded_edges(const Work_mesh& m, const std::vector<char>* skip = nullptr)
 {
   std::size_t folds = 0;
   for(auto e : m.edges())
-  {
-    const auto h = m.halfedge(e), o = m.opposite(h);
-    if(m.is_border(h) || m.is_border(o) || (skip && (*skip)[std::size_t(e)]))
-      continue;
-    const Vector_3d a = face_area_vector(m, h), b = face_area_vector(m, o);
-    if(a.dot(b) < -0.5 * a.norm() * b.norm())
+    if(!(skip && (*skip)[std::size_t(e)]) && is_folded_edge(m, m.halfedge(e)))
       ++folds;
-  }
   return folds;
 }
 

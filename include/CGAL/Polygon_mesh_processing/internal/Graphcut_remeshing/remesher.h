@@ -91,6 +91,8 @@ struct Remeshing_options
 class Graphcut_remesher
 {
   using Vertex = Work_mesh::Vertex_index;
+  using Halfedge = Work_mesh::Halfedge_index;
+  using Edge = Work_mesh::Edge_index;
   using Face = Work_mesh::Face_index;
   using Location = Feature_polylines<Work_mesh>::Location;
 
@@ -185,8 +187,9 @@ public:
     Candidate_set c = propose_candidates(temperature, greedy);
     if(c.moving.empty())
       return 0;
-    // The cut decides; should its choice make triangles that were apart intersect, the vertices of
-    // those triangles keep their positions and the cut decides again (each cut is over fewer
+    // The cut decides; should its choice make triangles that were apart intersect, or fold a
+    // triangle onto a neighbour, the vertices of those triangles keep their positions and the cut
+    // decides again (each cut is over fewer
     // candidates and never does worse than keeping everything, so the energy still does not rise).
     std::vector<char> excluded(c.moving.size(), 0);
     for(;;)
@@ -206,7 +209,9 @@ public:
       std::vector<char> touched(m_mesh.num_vertices(), 0);
       for(std::size_t i = 0; i < c.moving.size(); ++i)
         touched[std::size_t(c.moving[i])] = labels[i];
-      if(!exclude_new_intersections(c, labels, touched, excluded))
+      const bool intersecting = exclude_new_intersections(c, labels, touched, excluded);
+      const bool folding = exclude_new_folds(c, labels, previous, excluded);
+      if(!intersecting && !folding)
       {
         take_candidates(c, labels, touched);
         return moved;
@@ -252,6 +257,7 @@ public:
     {
       const Work_mesh mesh_before = m_mesh;
       const Tracking_state state_before = m_state;
+      const std::size_t folds_before = folded_edges(m_mesh, &m_state.feature_edge);
       m_state.frozen.assign(m_mesh.num_vertices(), 0);
       for(Vertex v : m_mesh.vertices())
         for(const Keep_out& k : m_keep_out)
@@ -267,7 +273,10 @@ public:
       // can have made some.
       m_intersections.connectivity_changed();
       const std::vector<char> changed = changed_vertices(mesh_before, m_mesh);
-      const std::vector<std::pair<Face, Face> > fresh = new_self_intersections(&changed);
+      std::vector<std::pair<Face, Face> > fresh = new_self_intersections(&changed);
+      if(folded_edges(m_mesh, &m_state.feature_edge) > folds_before)
+        for(const auto& pair : folds_among(changed))
+          fresh.push_back(pair);
 #ifdef CGAL_GRAPHCUT_REMESHING_VERBOSE
       std::cerr << "connectivity pass, attempt " << attempt << ": " << counts.flips << " flips, "
                 << counts.splits << " splits, " << counts.collapses << " collapses, "
@@ -413,6 +422,60 @@ private:
           }
         }
     return found;
+  }
+
+  // With the labelled candidates taken (`previous` the positions before): false when no triangle
+  // around the vertices that moved has folded onto a neighbour (guarantees.h) across an edge off
+  // the features, else the candidates of the moved vertices of those triangles excluded and true.
+  // (The triangle terms of the cut see one triangle at a time, never a pair.)
+  bool exclude_new_folds(const Candidate_set& c, const std::vector<char>& labels,
+                         const std::vector<Vector_3d>& previous, std::vector<char>& excluded)
+  {
+    const auto before = [&](Vertex u) {
+      const std::size_t i = c.variable[std::size_t(u)];
+      return i != Relocation_cut::none && labels[i] ? previous[i] : position(u);
+    };
+    const auto area_before = [&](Halfedge h) {
+      return area_vector(before(m_mesh.source(h)), before(m_mesh.target(h)), before(m_mesh.target(m_mesh.next(h))));
+    };
+    bool found = false;
+    for(std::size_t i = 0; i < c.moving.size(); ++i)
+      if(labels[i])
+        for(Halfedge g : halfedges_around_target(m_mesh.halfedge(c.moving[i]), m_mesh))
+          for(Halfedge k : {g, m_mesh.prev(g)}) // the edges at the vertex, then across from it
+          {
+            if(m_mesh.is_border(g) || m_state.feature_edge[std::size_t(m_mesh.edge(k))] ||
+               !is_folded_edge(m_mesh, k) || is_folded_pair(area_before(k), area_before(m_mesh.opposite(k))))
+              continue;
+            for(Halfedge side : {k, m_mesh.opposite(k)})
+              for(Vertex u : face_vertices(m_mesh, m_mesh.face(side)))
+              {
+                const std::size_t j = c.variable[std::size_t(u)];
+                if(j != Relocation_cut::none && labels[j] && !excluded[j])
+                  excluded[j] = found = true;
+              }
+          }
+    return found;
+  }
+
+  // The pairs of triangles folded onto each other (guarantees.h) across an edge off the features,
+  // with a vertex that `changed` flags.
+  std::vector<std::pair<Face, Face> > folds_among(const std::vector<char>& changed) const
+  {
+    std::vector<std::pair<Face, Face> > folds;
+    for(Edge e : m_mesh.edges())
+    {
+      const Halfedge h = m_mesh.halfedge(e), o = m_mesh.opposite(h);
+      if(m_state.feature_edge[std::size_t(e)] || !is_folded_edge(m_mesh, h))
+        continue;
+      for(Vertex u : {m_mesh.source(h), m_mesh.target(h), m_mesh.target(m_mesh.next(h)), m_mesh.target(m_mesh.next(o))})
+        if(std::size_t(u) < changed.size() && changed[std::size_t(u)])
+        {
+          folds.emplace_back(m_mesh.face(h), m_mesh.face(o));
+          break;
+        }
+    }
+    return folds;
   }
 
   // The candidates taken: where they were found on the reference, so that the data terms kept

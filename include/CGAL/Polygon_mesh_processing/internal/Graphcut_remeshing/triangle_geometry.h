@@ -54,6 +54,14 @@ inline Vector_3d area_vector(const Vector_3d& a, const Vector_3d& b, const Vecto
   return (b - a).cross(c - a);
 }
 
+// Two triangles of area vectors a and b that share an edge are folded onto each other when they
+// turn by more than 120 degrees (sharp edges are 35 degrees and more: no smooth part turns this
+// much over one edge).
+inline bool is_folded_pair(const Vector_3d& a, const Vector_3d& b)
+{
+  return a.dot(b) < -0.5 * a.norm() * b.norm();
+}
+
 // The component of v in the plane of unit normal n.
 inline Vector_3d tangential(const Vector_3d& v, const Vector_3d& n)
 {

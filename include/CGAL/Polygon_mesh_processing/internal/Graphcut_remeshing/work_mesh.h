@@ -41,6 +41,15 @@ Vector_3d face_area_vector(const Mesh& m, typename Mesh::Halfedge_index h)
                      to_vector(m.point(m.target(m.next(h)))));
 }
 
+// Whether the two triangles of the edge of h are folded onto each other (is_folded_pair()); never
+// on a border.
+template <typename Mesh>
+bool is_folded_edge(const Mesh& m, typename Mesh::Halfedge_index h)
+{
+  const auto o = m.opposite(h);
+  return !m.is_border(h) && !m.is_border(o) && is_folded_pair(face_area_vector(m, h), face_area_vector(m, o));
+}
+
 // function(x) for every element x of m of the index type Index (n slots, the removed ones left
 // out), as independent items: in parallel where TBB is.
 template <typename Index, typename Mesh, typename Function>
