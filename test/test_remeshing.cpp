@@ -519,9 +519,9 @@ TEST(GraphcutRemeshing, CoarseTargetKeepsTheUsersConstrainedEdges)
 // At a coarse target the relocation slides the vertices of thin parts down their sides, and the
 // coarse triangles cut a tip off while every vertex and centroid stays near the surface; the
 // reference vertices that stand out farthest from the mesh get a vertex. cow at four times its
-// mean edge length, at the seeds where the teats under its belly were cut off (Hausdorff 21.4e-3
-// and 20.1e-3 of the diagonal without the rule, 15.5e-3 and 15.8e-3 with it): within 0.7 times
-// isotropic_remeshing's 25.7e-3, issue 24's bar.
+// mean edge length, at the seeds where the teats under its belly were cut off (above 20e-3 of the
+// diagonal without the rule; the README has the figures): within 0.7 times isotropic_remeshing's
+// 25.7e-3, issue 24's bar.
 TEST(GraphcutRemeshing, CoarseTargetKeepsThinTips)
 {
 #ifdef GRAPHCUT_REMESHING_SANITIZE
