@@ -420,6 +420,22 @@ TEST(GraphcutRemeshing, TargetLengthSetsTheDensity)
   }
 }
 
+namespace {
+
+// isotropic_remeshing() at `target` as issue 24 compares with it: 5 iterations, the edges of 35
+// degrees or more constrained.
+Mesh isotropically_remeshed(const Mesh& input, double target)
+{
+  Mesh theirs = input;
+  auto constrained = get(CGAL::edge_is_feature, theirs);
+  PMP::detect_sharp_edges(theirs, 35, constrained);
+  PMP::isotropic_remeshing(faces(theirs), target, theirs,
+                           CGAL::parameters::number_of_iterations(5).edge_is_constrained_map(constrained));
+  return theirs;
+}
+
+} // namespace
+
 // Four times coarser than the input, the count comes near isotropic_remeshing's at the same length
 // (edges of 35 degrees or more constrained): on triceratops the sharp lines of its fine sampling,
 // short at that scale, once held a quarter more vertices; on ALSTOM_TEST4, a CAD strip, the regions
@@ -431,11 +447,7 @@ TEST(GraphcutRemeshing, CoarseTargetComesNearIsotropicRemeshingsCount)
   {
     const Mesh input = load_sample_mesh(name);
     const double target = 4 * mean_edge_length(input);
-    Mesh theirs = input;
-    auto constrained = get(CGAL::edge_is_feature, theirs);
-    PMP::detect_sharp_edges(theirs, 35, constrained);
-    PMP::isotropic_remeshing(faces(theirs), target, theirs,
-                             CGAL::parameters::number_of_iterations(5).edge_is_constrained_map(constrained));
+    const Mesh theirs = isotropically_remeshed(input, target);
     Mesh ours = input;
     PMP::graphcut_isotropic_remeshing(faces(ours), target, ours);
     EXPECT_LE(double(ours.number_of_vertices()), bound * double(theirs.number_of_vertices()))
@@ -533,6 +545,27 @@ TEST(GraphcutRemeshing, CoarseTargetKeepsThinTips)
     Mesh m = input;
     PMP::graphcut_isotropic_remeshing(faces(m), 4 * mean_edge_length(input), m, CGAL::parameters::random_seed(seed));
     EXPECT_LE(PMP::relative_surface_distance(input, m).hausdorff, 18e-3) << "seed " << seed;
+  }
+}
+
+// At twice triceratops's mean edge length, edges cut across the creases and hollows of its horn and
+// legs while their ends stay on the surface; once the relocation is over, the edges whose
+// midpoints stand out get a vertex below them. The Hausdorff distance then keeps within issue 24's
+// bar, 0.7 times isotropic_remeshing's at the same length (seeds 0 and 1: 0.81 and 0.82 times
+// before).
+TEST(GraphcutRemeshing, CoarseTargetCoversChordsAcrossCreases)
+{
+#ifdef GRAPHCUT_REMESHING_SANITIZE
+  GTEST_SKIP() << "full runs on triceratops; skipped in the sanitizer build";
+#endif
+  const Mesh input = load_sample_mesh("triceratops");
+  const double target = 2 * mean_edge_length(input);
+  const double theirs = PMP::relative_surface_distance(input, isotropically_remeshed(input, target)).hausdorff;
+  for(unsigned seed : {0u, 1u})
+  {
+    Mesh m = input;
+    PMP::graphcut_isotropic_remeshing(faces(m), target, m, CGAL::parameters::random_seed(seed));
+    EXPECT_LE(PMP::relative_surface_distance(input, m).hausdorff, 0.7 * theirs) << "seed " << seed;
   }
 }
 

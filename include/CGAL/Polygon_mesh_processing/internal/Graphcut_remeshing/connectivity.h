@@ -162,6 +162,17 @@ public:
     return counts;
   }
 
+  // The coverings alone, once the relocation is over (Graphcut_remesher::run()): where the
+  // reference still stands out from the mesh (cover_reference()) and the mesh from the reference
+  // (cover_chords()).
+  Connectivity_counts cover_what_stands_out()
+  {
+    Connectivity_counts counts;
+    counts.splits = cover_reference();
+    counts.splits += cover_chords();
+    return counts;
+  }
+
   // --- edge flips: the smallest of the six angles must grow, the valence deviation not rise ---
 
   // The gain in smallest angle of flipping e, or a non-positive value when e may not be flipped.
@@ -373,43 +384,103 @@ public:
       distance[std::size_t(r)] = (closest[std::size_t(r)] - x).norm();
       nearest[std::size_t(r)] = hit.second;
     });
+    std::vector<char> changed_near(m_mesh.num_faces(), 0);
+    std::size_t added = 0;
+    for(std::size_t i : standing_out(distance))
+    {
+      const Face f = nearest[i];
+      if(changed_near[std::size_t(f)])
+        continue;
+      const Vertex v = cover_toward(f, closest[i], m_reference.point(Vertex(Work_mesh::size_type(i))));
+      if(v == Vertex())
+        continue;
+      ++added;
+      mark_neighbourhood(v, changed_near);
+    }
+    return added;
+  }
+
+  // Beyond the paper, the other way round: an edge of the mesh may cut across a crease or a
+  // hollow of the reference that the coarse target hides, while its ends, and the centroids the
+  // data terms see, stay on the surface. Once the relocation is over (Graphcut_remesher::run()),
+  // the edges whose midpoints stand out from the reference as cover_reference()'s vertices do
+  // get a vertex on the reference below the midpoint, or part of the way there, one per
+  // neighbourhood. Feature edges keep to their lines and borders are not moved off. Returns the
+  // number of vertices added.
+  std::size_t cover_chords()
+  {
+    std::vector<Edge> edges;
+    std::vector<double> distance;
+    std::vector<Vector_3d> below;
+    for(Edge e : m_mesh.edges())
+    {
+      if(m_state.feature_edge[std::size_t(e)] || m_mesh.is_border(e))
+        continue;
+      const Halfedge h = m_mesh.halfedge(e);
+      const Vector_3d middle = (position(m_mesh.source(h)) + position(m_mesh.target(h))) / 2;
+      edges.push_back(e);
+      below.push_back(project(middle, m_mesh.source(h)));
+      distance.push_back((below.back() - middle).norm());
+    }
+    std::vector<char> changed_near(m_mesh.num_faces(), 0);
+    std::size_t added = 0;
+    for(std::size_t i : standing_out(distance))
+    {
+      const Halfedge h = m_mesh.halfedge(edges[i]);
+      const Face f = m_mesh.face(h);
+      if(changed_near[std::size_t(f)] || changed_near[std::size_t(m_mesh.face(m_mesh.opposite(h)))])
+        continue;
+      const Vector_3d middle = (position(m_mesh.source(h)) + position(m_mesh.target(h))) / 2;
+      const Vertex v = cover_toward(f, middle, below[i]);
+      if(v == Vertex())
+        continue;
+      ++added;
+      mark_neighbourhood(v, changed_near);
+    }
+    return added;
+  }
+
+  // The indices of the distances that stand out, the largest first: within cover_share_of_worst
+  // of the largest and far beyond most (on a sphere or a tube every chord leaves the surface
+  // alike, and vertices there would only make the mesh denser than the length asked for).
+  static std::vector<std::size_t> standing_out(const std::vector<double>& distance)
+  {
+    std::vector<std::size_t> far;
     if(distance.empty())
-      return 0;
-    // What stands out: on a sphere or a tube every chord leaves the surface alike, and vertices
-    // there would only make the mesh denser than the length asked for.
+      return far;
     const double worst = *std::max_element(distance.begin(), distance.end());
     std::vector<double> sorted = distance;
     const std::size_t typical_rank = std::size_t(cover_typical_rank * double(sorted.size() - 1));
     std::nth_element(sorted.begin(), sorted.begin() + typical_rank, sorted.end());
     const double bound = (std::max)(cover_share_of_worst * worst, cover_outlier_ratio * sorted[typical_rank]);
-    std::vector<Vertex> far;
-    for(Vertex r : reference.vertices())
-      if(distance[std::size_t(r)] > 0 && distance[std::size_t(r)] >= bound)
-        far.push_back(r);
-    std::stable_sort(far.begin(), far.end(),
-                     [&](Vertex r, Vertex s) { return distance[std::size_t(r)] > distance[std::size_t(s)]; });
-    std::vector<char> changed_near(m_mesh.num_faces(), 0);
-    std::size_t added = 0;
-    for(Vertex r : far)
+    for(std::size_t i = 0; i < distance.size(); ++i)
+      if(distance[i] > 0 && distance[i] >= bound)
+        far.push_back(i);
+    std::stable_sort(far.begin(), far.end(), [&](std::size_t i, std::size_t j) { return distance[i] > distance[j]; });
+    return far;
+  }
+
+  // A vertex for the triangle f at `to`, or, where its triangles would fold over, part of the way
+  // there from `from` (cover_shares); none (a null vertex) when no way keeps acceptable triangles.
+  Vertex cover_toward(Face f, const Vector_3d& from, const Vector_3d& to)
+  {
+    for(double share : cover_shares)
     {
-      if(changed_near[std::size_t(nearest[std::size_t(r)])])
-        continue;
-      // Where a vertex on the tip itself would fold a triangle over, one part of the way to it.
-      const Vector_3d x = m_reference.point(r), y = closest[std::size_t(r)];
-      Vertex v;
-      for(double share : cover_shares)
-        if((v = cover(nearest[std::size_t(r)], y + share * (x - y))) != Vertex())
-          break;
-      if(v == Vertex())
-        continue;
-      ++added;
-      changed_near.resize(m_mesh.num_faces(), 0);
-      for(Vertex w : vertices_around_target(m_mesh.halfedge(v), m_mesh))
-        for(Halfedge g : halfedges_around_target(m_mesh.halfedge(w), m_mesh))
-          if(!m_mesh.is_border(g))
-            changed_near[std::size_t(m_mesh.face(g))] = 1;
+      const Vertex v = cover(f, from + share * (to - from));
+      if(v != Vertex())
+        return v;
     }
-    return added;
+    return Vertex();
+  }
+
+  // Marks the triangles around v's neighbours, where a covering has changed the mesh.
+  void mark_neighbourhood(Vertex v, std::vector<char>& changed_near) const
+  {
+    changed_near.resize(m_mesh.num_faces(), 0);
+    for(Vertex w : vertices_around_target(m_mesh.halfedge(v), m_mesh))
+      for(Halfedge g : halfedges_around_target(m_mesh.halfedge(w), m_mesh))
+        if(!m_mesh.is_border(g))
+          changed_near[std::size_t(m_mesh.face(g))] = 1;
   }
 
   // A vertex at x for the triangle f: on the side of f whose split keeps the best triangles, or

@@ -13,6 +13,8 @@
 //       in the first phase, every connectivity_period iterations:
 //         flips, splits, collapses, vertices where the reference is far,
 //         vertex splits, relaxation                                      (connectivity.h)
+//   with a length coarser than the input's, twice: vertices where the reference stands out
+//   from the mesh, and where the mesh's edges stand out from the reference  (connectivity.h)
 //
 // The energy of eq. (1) is in energy.h, the reference surface and its frames in
 // reference_surface.h, the feature lines in features.h, the target edge length in sizing.h.
@@ -175,6 +177,17 @@ public:
         }
       }
     }
+    // Beyond the paper: with a length coarser than the input's, what still stands out once the
+    // relocation is over gets vertices, which then stay where they are put, on the reference
+    // (the energies above are those of the iterations).
+    if(m_options.do_connectivity_optimization && m_sizing.covers_reference)
+      for(std::size_t k = 0; k < final_coverings; ++k)
+      {
+        m_cut.release();
+        connectivity_pass(stats, true);
+        m_energy.compute_terms();
+        m_tracking.mark_all();
+      }
     return stats;
   }
 
@@ -247,7 +260,7 @@ public:
   // wider one after a second failure), in this pass and the next (keep_out_lifetime); later
   // passes try there again, the relocation having moved the triangles since (kept for the whole
   // run, those regions froze most of ALSTOM_TEST4 at twice its mean edge length).
-  void connectivity_pass(Graphcut_remeshing_statistics& stats)
+  void connectivity_pass(Graphcut_remeshing_statistics& stats, bool covering_only = false)
   {
     ++m_passes;
     m_keep_out.erase(std::remove_if(m_keep_out.begin(), m_keep_out.end(),
@@ -267,7 +280,7 @@ public:
                                        [this](Vertex v, const Vector_3d& x, double bound) {
                                          return m_energy.local_evidence(v, x, bound);
                                        });
-      const Connectivity_counts counts = optimizer.run();
+      const Connectivity_counts counts = covering_only ? optimizer.cover_what_stands_out() : optimizer.run();
       m_energy.collect_feature_edges();
       // The mesh had no new intersections before the pass: only triangles it changed or moved
       // can have made some.
@@ -553,6 +566,9 @@ private:
     std::size_t pass;
   };
   static constexpr std::size_t keep_out_lifetime = 1;
+  // The coverings after the relocation: one per neighbourhood at a time, a second one covers
+  // what stood out next to the first ones; a third added nothing on the sample meshes.
+  static constexpr std::size_t final_coverings = 2;
   std::vector<Keep_out> m_keep_out;
   std::size_t m_passes = 0; // connectivity passes so far
   std::vector<CGAL::Bbox_3> m_input_intersection_zones; // see new_self_intersections()
