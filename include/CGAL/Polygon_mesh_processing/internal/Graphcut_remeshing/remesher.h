@@ -566,8 +566,8 @@ private:
     std::size_t pass;
   };
   static constexpr std::size_t keep_out_lifetime = 1;
-  // The coverings after the relocation: one per neighbourhood at a time, a second one covers
-  // what stood out next to the first ones; a third added nothing on the sample meshes.
+  // The coverings after the relocation: each covers one place per neighbourhood, and the second
+  // what stood out next to the first one's places.
   static constexpr std::size_t final_coverings = 2;
   std::vector<Keep_out> m_keep_out;
   std::size_t m_passes = 0; // connectivity passes so far
