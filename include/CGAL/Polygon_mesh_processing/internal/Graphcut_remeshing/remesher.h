@@ -177,9 +177,9 @@ public:
         }
       }
     }
-    // Beyond the paper: with a length coarser than the input's, what still stands out once the
-    // relocation is over gets vertices, which then stay where they are put, on the reference
-    // (the energies above are those of the iterations).
+    // Beyond the paper: with a length coarser than the input's (Sizing::covers_reference), what
+    // still stands out once the relocation is over gets vertices, which then stay where they are
+    // put, on the reference (the energies above are those of the iterations).
     if(m_options.do_connectivity_optimization && m_sizing.covers_reference)
       for(std::size_t k = 0; k < final_coverings; ++k)
       {
@@ -352,7 +352,7 @@ private:
       const double longest = options.target_edge_length > 0 ? longest_to_asked_target : longest_to_mean_length;
       Sizing sizing = curvature_sizing(reference, feature_edge, length, options.sharp_angle_bounds.second, longest);
       sizing.target_asked_for = sizing.into_lines = options.target_edge_length > 0;
-      sizing.covers_reference = sizing.target_asked_for && length > mean_edge_length(reference);
+      sizing.covers_reference = sizing.target_asked_for && length >= covering_length_ratio * mean_edge_length(reference);
       return sizing;
     }
     Sizing sizing;

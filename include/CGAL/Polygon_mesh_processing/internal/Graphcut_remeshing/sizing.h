@@ -47,9 +47,10 @@ struct Sizing
   // The user asked for a density (a length, with or without a tolerance): a free vertex may
   // collapse into a feature line (see Connectivity_optimizer::resampling_collapse_gain()).
   bool into_lines = false;
-  // The user asked for a length longer than the input's mean edge length: the triangles span
-  // several reference vertices and may cut a tip between them off, which the connectivity stage
-  // then covers (see Connectivity_optimizer::cover_reference()). At a finer length every reference
+  // The user asked for a length of at least covering_length_ratio times the input's mean edge
+  // length: the triangles span several reference vertices and may cut a tip between them off, or
+  // an edge cut across a crease, which the connectivity stage then covers (see
+  // Connectivity_optimizer::cover_reference(), cover_chords()). At a finer length every reference
   // vertex is near a vertex of the mesh, and a vertex put there only makes thin triangles.
   bool covers_reference = false;
 
@@ -146,6 +147,11 @@ inline void grade_sizing(const Work_mesh& m, double gradation, std::vector<doubl
     }
   }
 }
+
+// The coarsest length, relative to the input's mean edge length, at which the input's own edges
+// are all within the re-sampling's bounds (4/5 and 4/3 of the length) on average: up to it the
+// re-sampling keeps about the input's vertices, and nothing is covered (Sizing::covers_reference).
+constexpr double covering_length_ratio = 4.0 / 3.0;
 
 // Neighbouring target lengths differ by at most this times the distance between them.
 constexpr double sizing_gradation = 0.5;
