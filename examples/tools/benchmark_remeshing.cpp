@@ -74,17 +74,19 @@ std::string quality_usage()
     line += (line.empty() ? "" : ",") + m;
   }
   meshes += line;
-  const auto defaults = PMP::internal::Graphcut_remeshing::Remeshing_options().sharp_angle_bounds;
+  const PMP::internal::Graphcut_remeshing::Remeshing_options defaults;
   std::ostringstream bounds;
-  bounds << defaults.first << ' ' << defaults.second;
+  bounds << defaults.sharp_angle_bounds.first << ' ' << defaults.sharp_angle_bounds.second << ", with --no-resampling or\n"
+         << "                          --length-factors " << defaults.paper_sharp_angle_bounds.first << ' ' << defaults.paper_sharp_angle_bounds.second;
   return "\n"
-         "usage: benchmark_remeshing --quality [--meshes LIST] [--seeds LIST] [--resampling]\n"
+         "usage: benchmark_remeshing --quality [--meshes LIST] [--seeds LIST] [--no-resampling]\n"
          "                                     [--sharp-angle LOW HIGH] [--length-factors LIST]\n"
          "                                     [--data DIR] [--json FILE]\n"
          "\n"
          "Compares the quality of graphcut_isotropic_remeshing (defaults, each seed) with that of CGAL's\n"
          "isotropic_remeshing (as above, run once a mesh): a row per mesh and seed with the vertex\n"
-         "counts, mean minimum and maximum angles, the share of triangles with an angle below 30\n"
+         "counts, mean minimum and maximum angles, the smallest and largest angles, the share of\n"
+         "triangles with an angle below 30\n"
          "degrees, Hausdorff and RMS distances to the input (x1e-3 of its bounding-box diagonal,\n"
          "300k samples a side), the seconds of each remeshing, and whether ours meets the bars: at\n"
          "most 1.15 times cgal's vertices, a mean minimum angle >= cgal's, a share below 30 degrees\n"
@@ -97,15 +99,15 @@ std::string quality_usage()
          meshes +
          ")\n"
          "  --seeds LIST            comma-separated random seeds of our remesher (default 0,1)\n"
-         "  --resampling            our remesher with graphcut_parameters::resampling(true) (default:\n"
-         "                          off, as the remesher's default)\n"
+         "  --no-resampling         our remesher with graphcut_parameters::resampling(false), the\n"
+         "                          paper's connectivity (default: re-sampling, as the remesher's)\n"
          "  --sharp-angle LOW HIGH  our remesher's sharp-edge hysteresis bounds, degrees (default " +
          bounds.str() +
          ")\n"
          "  --length-factors LIST   comma-separated positive factors f: both remeshers aim at f times\n"
          "                          the input's mean edge length, ours through\n"
          "                          graphcut_isotropic_remeshing(faces(mesh), target, mesh, np)\n"
-         "                          (re-sampling on, whatever --resampling says), CGAL's once a mesh\n"
+         "                          (re-sampling on, whatever --no-resampling says), CGAL's once a mesh\n"
          "                          and factor; a row per mesh, factor and seed, with a column L/mean,\n"
          "                          and the density bar becomes |V ours - V cgal| <= 0.15 times cgal's\n"
          "                          (default none: ours without a target, as above)\n"
@@ -652,6 +654,12 @@ int run_quality_mode(const tools::Quality_options& options, const std::string& j
   if(!error.empty())
     std::cerr << '\n';
   tools::write_quality_table(std::cout, rows);
+  const bool resamples = options.resampling || !options.length_factors.empty();
+  const auto bounds = options.sharp_angle_bounds.value_or(
+    PMP::internal::Graphcut_remeshing::Remeshing_options().default_sharp_angle_bounds(
+      options.resampling, !options.length_factors.empty()));
+  std::cout << "ours: " << (resamples ? "re-sampling" : "the paper's connectivity (--no-resampling)")
+            << ", sharp-angle bounds " << bounds.first << " " << bounds.second << '\n';
   if(!json_file.empty())
   {
     std::ofstream out(json_file);
@@ -674,7 +682,7 @@ int main(int argc, char** argv)
   bool skip_large = false, run_ours_method = true, run_cgal_method = true;
   std::string json_file;
   // The two modes take different mesh names, so --meshes is checked once the mode is known.
-  bool quality = false, resampling = false;
+  bool quality = false, no_resampling = false;
   std::optional<std::pair<double, double>> sharp_angle_bounds;
   std::optional<std::string> mesh_list, seed_list, length_factor_list;
   std::vector<std::string> timing_only; // options of the timing mode given, refused with --quality
@@ -697,8 +705,8 @@ int main(int argc, char** argv)
       quality = true;
     else if(arg == "--seeds")
       seed_list = value();
-    else if(arg == "--resampling")
-      resampling = true;
+    else if(arg == "--no-resampling")
+      no_resampling = true;
     else if(arg == "--length-factors")
       length_factor_list = value();
     else if(arg == "--sharp-angle")
@@ -761,16 +769,15 @@ int main(int argc, char** argv)
       options.meshes = split(*mesh_list);
     if(seed_list && !parse_seeds(*seed_list, options.seeds))
       fail("--seeds needs a comma-separated list of whole numbers below 2^32");
-    options.resampling = resampling;
-    if(sharp_angle_bounds)
-      options.sharp_angle_bounds = *sharp_angle_bounds;
+    options.resampling = !no_resampling;
+    options.sharp_angle_bounds = sharp_angle_bounds;
     if(length_factor_list && !parse_factors(*length_factor_list, options.length_factors))
       fail("--length-factors needs a comma-separated list of positive numbers");
     return run_quality_mode(options, json_file);
   }
-  if(seed_list || resampling || sharp_angle_bounds || length_factor_list)
+  if(seed_list || no_resampling || sharp_angle_bounds || length_factor_list)
     fail(std::string(seed_list             ? "--seeds"
-                     : resampling          ? "--resampling"
+                     : no_resampling       ? "--no-resampling"
                      : sharp_angle_bounds  ? "--sharp-angle"
                                            : "--length-factors") +
          " applies to --quality only");

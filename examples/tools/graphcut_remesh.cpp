@@ -77,10 +77,13 @@ std::string usage()
          "  --no-connectivity       relocate vertices only, never change the connectivity (default:\n"
          "                          the connectivity is optimised)\n"
       << "  --sharp-angle LOW HIGH  the dihedral angles (degrees) of the sharp-edge hysteresis (default "
-      << defaults.sharp_angle_bounds.first << " " << defaults.sharp_angle_bounds.second << ")\n"
+      << defaults.sharp_angle_bounds.first << " " << defaults.sharp_angle_bounds.second << ";\n"
+      << "                          with --no-resampling, --target-length or --target-vertices, the\n"
+      << "                          paper's " << defaults.paper_sharp_angle_bounds.first << " "
+      << defaults.paper_sharp_angle_bounds.second << ")\n"
       << "  --target-length L       re-sample the surface to edges of about L (the input's units),\n"
       << "                          shorter where it is curved (default: the input's mean edge length,\n"
-      << "                          without re-sampling unless --resampling)\n"
+      << "                          re-sampled)\n"
       << "  --target-vertices N     re-sample the surface to about N vertices: the target length is\n"
       << "                          found from the surface's area, then corrected by the count a run\n"
       << "                          gives, until it lands within " << int(100 * vertex_count_tolerance)
@@ -91,8 +94,10 @@ std::string usage()
       << "                          quarter of the target length and the target length; without\n"
       << "                          re-sampling, E shortens the edges aimed at where it is curved\n"
       << "                          (default: none, a field for the target length's count)\n"
-      << "  --resampling            re-sample the surface to a curvature-adapted sizing field in the\n"
-      << "                          connectivity passes (default: " << (defaults.resampling ? "on" : "off") << ")\n"
+      << "  --no-resampling         the paper's own connectivity passes (flips, splits and collapses\n"
+      << "                          in flat regions, vertex splits) instead of re-sampling the surface\n"
+      << "                          to a curvature-adapted sizing field (default: "
+      << (defaults.resampling ? "re-sampling" : "the paper's") << ")\n"
       << "  --threads N             run the remesher's parallel loops on at most N threads; the output\n"
       << "                          does not depend on N (default: all cores"
 #ifndef CGAL_LINKED_WITH_TBB
@@ -228,7 +233,7 @@ int main(int argc, char** argv)
     else if(arg == "--face-data-weight") value(face_data_weight);
     else if(arg == "--seed") value(seed);
     else if(arg == "--no-connectivity") connectivity = false;
-    else if(arg == "--resampling") resampling = true;
+    else if(arg == "--no-resampling") resampling = false;
     else if(arg == "--target-length")
     {
       value(target_length);
@@ -319,6 +324,10 @@ int main(int argc, char** argv)
     const auto start = std::chrono::steady_clock::now();
     // The named parameters hold a value for every option: the user's, or the library's default.
     const GR::Remeshing_options defaults;
+    // A density asked for re-samples, whatever --no-resampling says.
+    const bool resamples = resampling || target_length || target_vertices;
+    const std::pair<double, double> default_bounds =
+      defaults.default_sharp_angle_bounds(resamples, target_length || target_vertices);
     const auto parameters = GP::combine(
       CGAL::parameters::number_of_iterations(iterations.value_or(defaults.number_of_iterations))
         .random_seed(seed.value_or(defaults.random_seed)),
@@ -326,8 +335,8 @@ int main(int argc, char** argv)
       GP::lambda_data(lambda_data.value_or(defaults.weights.lambda_data)),
       GP::face_data_weight(face_data_weight.value_or(defaults.weights.face_data_weight)),
       GP::do_connectivity_optimization(connectivity), GP::resampling(resampling),
-      GP::sharp_angle_bounds(std::make_pair(sharp_low.value_or(defaults.sharp_angle_bounds.first),
-                                            sharp_high.value_or(defaults.sharp_angle_bounds.second))));
+      GP::sharp_angle_bounds(std::make_pair(sharp_low.value_or(default_bounds.first),
+                                            sharp_high.value_or(default_bounds.second))));
     // The call with a target length, as isotropic_remeshing's, or the one without.
     auto remesh_with = [&](const auto& np) {
       mesh = input;
@@ -401,12 +410,17 @@ int main(int argc, char** argv)
     if(quiet && json_file.empty())
       return EXIT_SUCCESS; // the figures below are for the table and the JSON only (the distances are not cheap)
 
+    // The connectivity the run used, and the length it aimed at: the one asked for or found, else
+    // the input's mean.
+    const std::string mode = !connectivity ? "relocation only" : resamples ? "re-sampling" : "paper";
+    const double target_edge_length = target_length ? *target_length : tools::mean_edge_length(input);
     const PMP::Mesh_quality_report before = PMP::mesh_quality_report(input);
     const PMP::Mesh_quality_report after = PMP::mesh_quality_report(mesh);
     const PMP::Relative_surface_distance distance = PMP::relative_surface_distance(input, mesh);
     if(!quiet)
     {
-      tools::write_table(std::cout, {"input", "output"}, {before, after}, &distance);
+      tools::write_table(std::cout, {"input", "output"}, {before, after}, &distance, nullptr,
+                         {{"mode", mode}, {"target edge length", tools::json_number(target_edge_length)}});
       std::cout << "time (s)                  " << std::setw(32) << seconds << '\n';
     }
     if(!json_file.empty())
@@ -419,8 +433,7 @@ int main(int argc, char** argv)
       out << ", \"distance\": ";
       tools::write_json(out, distance);
       out << ", \"seconds\": " << tools::json_number(seconds);
-      // The length the run aimed at: the one asked for or found, else the input's mean.
-      out << ", \"target_edge_length\": " << tools::json_number(target_length ? *target_length : tools::mean_edge_length(input));
+      out << ", \"mode\": \"" << mode << "\", \"target_edge_length\": " << tools::json_number(target_edge_length);
       if(target_vertices)
         out << ", \"target_vertices\": " << *target_vertices << ", \"runs\": " << runs << ", \"kept_run\": " << kept_run;
       out << ", \"energy\": [";

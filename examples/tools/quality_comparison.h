@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -59,10 +60,10 @@ struct Quality_options
   std::string data_dir;
   std::vector<std::string> meshes = quality_default_meshes();
   std::vector<unsigned int> seeds = {0, 1};
-  bool resampling = false; // graphcut_parameters::resampling of our remesher
-  // graphcut_parameters::sharp_angle_bounds of our remesher
-  std::pair<double, double> sharp_angle_bounds =
-    CGAL::Polygon_mesh_processing::internal::Graphcut_remeshing::Remeshing_options().sharp_angle_bounds;
+  // graphcut_parameters::resampling of our remesher
+  bool resampling = CGAL::Polygon_mesh_processing::internal::Graphcut_remeshing::Remeshing_options().resampling;
+  // graphcut_parameters::sharp_angle_bounds of our remesher; none: the mode's default
+  std::optional<std::pair<double, double> > sharp_angle_bounds;
   // Positive multiples of the input's mean edge length both remeshers aim at, each in turn; empty:
   // ours chooses its density, CGAL's aims at the mean edge length.
   std::vector<double> length_factors;
@@ -74,6 +75,8 @@ struct Remeshing_quality
   std::size_t vertices = 0;
   double mean_min_angle = 0;      // degrees
   double mean_max_angle = 0;      // degrees
+  double min_angle = 0;           // degrees, the smallest of all triangles
+  double max_angle = 0;           // degrees, the largest
   double poor_percentage = 0;     // share of triangles with an angle below quality_poor_angle
   double hausdorff = 0;           // ratio to the input's bounding-box diagonal
   double rms = 0;                 // the same
@@ -123,6 +126,8 @@ inline Remeshing_quality measure_remeshing(const Mesh& input, const Mesh& output
   q.vertices = report.number_of_vertices;
   q.mean_min_angle = report.mean_min_angle;
   q.mean_max_angle = report.mean_max_angle;
+  q.min_angle = report.min_angle;
+  q.max_angle = report.max_angle;
   q.poor_percentage = poor_triangle_percentage(output, quality_poor_angle);
   const PMP::Relative_surface_distance d = PMP::relative_surface_distance(
     input, output, CGAL::parameters::number_of_points_on_faces(quality_distance_samples));
@@ -206,6 +211,7 @@ inline void write_quality_table(std::ostream& out, const std::vector<Quality_row
     out << std::setw(7) << "L/mean";
   out << std::setw(seed_width) << "seed" << std::setw(6) << "V in" << std::setw(8) << "V ours" << std::setw(8)
       << "V cgal" << std::setw(15) << "min ours/cgal" << std::setw(15) << "max ours/cgal" << std::setw(17)
+      << "worst ours/cgal" << std::setw(15) << "widest ours/cgal" << std::setw(17)
       << "<30 % ours/cgal" << std::setw(13) << "H ours/cgal" << std::setw(15) << "RMS ours/cgal" << std::setw(17)
       << "sharp ours/cgal" << std::setw(14) << "s ours/cgal"
       << "  bars\n";
@@ -219,6 +225,8 @@ inline void write_quality_table(std::ostream& out, const std::vector<Quality_row
     out << std::setw(seed_width) << r.seed << std::setw(6) << r.input_vertices << std::setw(8) << o.vertices
         << std::setw(8) << c.vertices << std::setw(15) << quality_pair(o.mean_min_angle, c.mean_min_angle, 5, 6, 2)
         << std::setw(15) << quality_pair(o.mean_max_angle, c.mean_max_angle, 5, 6, 2) << std::setw(17)
+        << quality_pair(o.min_angle, c.min_angle, 5, 6, 2) << std::setw(15)
+        << quality_pair(o.max_angle, c.max_angle, 6, 6, 2) << std::setw(17)
         << quality_pair(o.poor_percentage, c.poor_percentage, 5, 5, 1) << std::setw(13)
         << quality_pair(1e3 * o.hausdorff, 1e3 * c.hausdorff, 5, 5, 2) << std::setw(15)
         << quality_pair(1e3 * o.rms, 1e3 * c.rms, 5, 5, 3) << std::setw(17)
@@ -232,7 +240,8 @@ inline void write_quality_table(std::ostream& out, const std::vector<Quality_row
 inline void write_quality_json(std::ostream& out, const Remeshing_quality& q)
 {
   out << "{\"vertices\": " << q.vertices << ", \"mean_min_angle\": " << json_number(q.mean_min_angle)
-      << ", \"mean_max_angle\": " << json_number(q.mean_max_angle)
+      << ", \"mean_max_angle\": " << json_number(q.mean_max_angle) << ", \"min_angle\": " << json_number(q.min_angle)
+      << ", \"max_angle\": " << json_number(q.max_angle)
       << ", \"poor_percent\": " << json_number(q.poor_percentage)
       << ", \"hausdorff\": " << json_number(q.hausdorff) << ", \"rms\": " << json_number(q.rms)
       << ", \"sharp_line_distance\": " << json_number(q.sharp_line_distance)
@@ -289,15 +298,16 @@ inline double remesh_with_ours(Mesh& mesh, const Quality_options& options, unsig
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   namespace GP = PMP::graphcut_parameters;
+  const std::pair<double, double> bounds = options.sharp_angle_bounds.value_or(
+    CGAL::Polygon_mesh_processing::internal::Graphcut_remeshing::Remeshing_options().default_sharp_angle_bounds(
+      options.resampling, target > 0));
   const auto start = std::chrono::steady_clock::now();
   if(target > 0)
-    PMP::graphcut_isotropic_remeshing(
-      faces(mesh), target, mesh,
-      GP::combine(CGAL::parameters::random_seed(seed), GP::sharp_angle_bounds(options.sharp_angle_bounds)));
+    PMP::graphcut_isotropic_remeshing(faces(mesh), target, mesh,
+                                      GP::combine(CGAL::parameters::random_seed(seed), GP::sharp_angle_bounds(bounds)));
   else
     PMP::graphcut_isotropic_remeshing(mesh, GP::combine(CGAL::parameters::random_seed(seed),
-                                                        GP::resampling(options.resampling),
-                                                        GP::sharp_angle_bounds(options.sharp_angle_bounds)));
+                                                        GP::resampling(options.resampling), GP::sharp_angle_bounds(bounds)));
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -12,6 +12,8 @@
 
 #include "tool_support.h"
 
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/remesher.h>
+
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -35,12 +37,20 @@ inline double dihedral_degrees(const Mesh& m, Mesh::Halfedge_index h)
   return std::acos((std::max)(-1.0, (std::min)(1.0, a * b))) * 180 / CGAL_PI;
 }
 
+// One degree above the largest default upper bound of the sharp-edge hysteresis (both modes), so
+// that rounding cannot decide.
+inline double sure_corner_angle()
+{
+  const CGAL::Polygon_mesh_processing::internal::Graphcut_remeshing::Remeshing_options defaults;
+  return (std::max)(defaults.sharp_angle_bounds.second, defaults.paper_sharp_angle_bounds.second) + 1;
+}
+
 // The vertices that may never move, found without the library's own classification: three or
-// more edges that are border edges or clearly sharp (dihedral angle above 36 degrees, one above
-// the upper bound of the hysteresis, so that rounding cannot decide), or a border that turns by
-// more than 36 degrees.
+// more edges that are border edges or clearly sharp (dihedral angle above sure_corner_angle()), or
+// a border that turns by more than that.
 inline std::vector<Kernel::Point_3> sure_corners(const Mesh& m)
 {
+  const double sure = sure_corner_angle();
   std::vector<Kernel::Point_3> corners;
   for(Mesh::Vertex_index v : vertices(m))
   {
@@ -48,7 +58,7 @@ inline std::vector<Kernel::Point_3> sure_corners(const Mesh& m)
     double turn = 0;
     for(Mesh::Halfedge_index h : CGAL::halfedges_around_target(v, m))
     {
-      if(m.is_border(m.edge(h)) || dihedral_degrees(m, h) > 36)
+      if(m.is_border(m.edge(h)) || dihedral_degrees(m, h) > sure)
         ++features;
       if(m.is_border(h))
       {
@@ -57,7 +67,7 @@ inline std::vector<Kernel::Point_3> sure_corners(const Mesh& m)
         turn = std::acos((std::max)(-1.0, (std::min)(1.0, c))) * 180 / CGAL_PI;
       }
     }
-    if(features >= 3 || turn > 36)
+    if(features >= 3 || turn > sure)
       corners.push_back(m.point(v));
   }
   return corners;

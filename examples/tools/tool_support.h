@@ -419,7 +419,8 @@ inline void write_json(std::ostream& out,
 inline void write_table(std::ostream& out, const std::vector<std::string>& titles,
                         const std::vector<CGAL::Polygon_mesh_processing::Mesh_quality_report>& q,
                         const CGAL::Polygon_mesh_processing::Relative_surface_distance* d = nullptr,
-                        const double* sharp_lines = nullptr)
+                        const double* sharp_lines = nullptr,
+                        const std::vector<std::pair<std::string, std::string> >& settings = {})
 {
   const int label = 26, column = 16;
   auto row = [&](const std::string& name, auto value_of) {
@@ -435,7 +436,7 @@ inline void write_table(std::ostream& out, const std::vector<std::string>& title
   };
   out << std::left << std::setw(label) << "" << std::right;
   for(const auto& t : titles)
-    out << std::setw(column) << (t.size() < std::size_t(column) ? t : t.substr(t.size() - column + 1));
+    out << std::setw(column) << (t.size() < std::size_t(column) ? t : "..." + t.substr(t.size() - column + 4));
   out << '\n';
   row("vertices", [](const auto& r) { return std::to_string(r.number_of_vertices); });
   row("faces", [](const auto& r) { return std::to_string(r.number_of_faces); });
@@ -444,6 +445,9 @@ inline void write_table(std::ostream& out, const std::vector<std::string>& title
   row("mean max angle (deg)", [&](const auto& r) { return fixed(r.mean_max_angle, 2); });
   row("min angle (deg)", [&](const auto& r) { return fixed(r.min_angle, 2); });
   row("max angle (deg)", [&](const auto& r) { return fixed(r.max_angle, 2); });
+  for(const auto& setting : settings)
+    out << std::left << std::setw(label) << setting.first << std::right << std::setw(column * int(q.size()))
+        << setting.second << '\n';
   if(d != nullptr)
   {
     out << std::left << std::setw(label) << "Hausdorff / diag (1e-3)" << std::right
@@ -451,9 +455,11 @@ inline void write_table(std::ostream& out, const std::vector<std::string>& title
     out << std::left << std::setw(label) << "RMS / diag (1e-3)" << std::right
         << std::setw(column * int(q.size())) << fixed(1e3 * d->rms, 4) << '\n';
   }
+  // NaN: the first mesh has no sharp line to measure.
   if(sharp_lines != nullptr)
     out << std::left << std::setw(label) << "sharp lines / diag (1e-3)" << std::right
-        << std::setw(column * int(q.size())) << fixed(1e3 * *sharp_lines, 4) << '\n';
+        << std::setw(column * int(q.size())) << (std::isnan(*sharp_lines) ? "n/a" : fixed(1e3 * *sharp_lines, 4))
+        << '\n';
 }
 
 } // namespace graphcut_remeshing_tools

@@ -36,6 +36,8 @@ def struct_defaults(path, name):
 
 code = struct_defaults(internal + 'remesher.h', 'Remeshing_options')
 code.update(struct_defaults(internal + 'energy.h', 'Energy_weights'))
+# The sharp-angle bounds are documented with both modes' defaults, re-sampling's first.
+code['sharp_angle_bounds'] = code['sharp_angle_bounds'] + code.pop('paper_sharp_angle_bounds')
 check(len(code) >= 12, 'found %d defaults in Remeshing_options and Energy_weights' % len(code))
 
 # The reference: the named-parameter block of graphcut_isotropic_remeshing().

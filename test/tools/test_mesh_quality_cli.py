@@ -8,6 +8,7 @@ case with a known answer, and its refusals of bad input.
 usage: test_mesh_quality_cli.py MESH_QUALITY DATA_DIR
 """
 import json
+import shutil
 import math
 import os
 import subprocess
@@ -142,7 +143,7 @@ with tempfile.TemporaryDirectory() as tmp:
     check(r.returncode == 0, "two meshes: exit code %d (%s)" % (r.returncode, r.stderr))
     both = json.loads(r.stdout)
     check(sorted(both.keys()) == ['distance', 'original', 'remeshed', 'sharp_lines'], "two meshes: keys %s" % both.keys())
-    check(both['sharp_lines'] == 0, "a flat square has no sharp line: %r" % both['sharp_lines'])
+    check(both['sharp_lines'] is None, "a flat square has no sharp line to measure (null): %r" % both['sharp_lines'])
     check(sorted(both['distance'].keys()) == ['hausdorff', 'rms'], "distance keys %s" % both['distance'].keys())
     expected = 1.0 / math.sqrt(8.0)
     check(abs(both['distance']['hausdorff'] - expected) < 1e-8, "hausdorff %r" % both['distance'])
@@ -167,6 +168,13 @@ with tempfile.TemporaryDirectory() as tmp:
     check(r1 == r2, "same seed gave different output")
     r = run([square, moved])
     check('Hausdorff' in r.stdout and 'RMS' in r.stdout and 'sharp lines' in r.stdout, "two-mesh table: %r" % r.stdout)
+    sharp_row = [line for line in r.stdout.splitlines() if line.startswith('sharp lines')]
+    check(len(sharp_row) == 1 and sharp_row[0].split()[-1] == 'n/a', "no sharp line: the table shows %r" % sharp_row)
+    # A title longer than its column keeps its end, marked as cut.
+    long_name = os.path.join(tmp, 'knot_resampled.off')
+    shutil.copy(square, long_name)
+    r = run([square, long_name])
+    check('...esampled.off' in r.stdout.splitlines()[0], "a long title: %r" % r.stdout.splitlines()[0])
 
     # 3. Refusals: one line on stderr, exit code 1.
     expect_refusal('missing file', [os.path.join(tmp, 'nothing.off')])

@@ -34,37 +34,98 @@ struct Default_visitor
   bool operator()(const Graphcut_remeshing_progress&) const { return true; }
 };
 
-// Named parameters to plain values; a parameter not given keeps the default of
-// Remeshing_options, where the defaults are written.
+// CGAL's callback when none is given: never stops.
+struct Default_callback
+{
+  bool operator()(double) const { return true; }
+};
+
+// Progress and cancellation, told to the package's `visitor`, to CGAL's `visitor` (the same
+// callable) and to CGAL's `callback` (the fraction of the iterations done, in [0, 1]); any of them
+// returning false ends the run.
+template <typename Visitor, typename CgalVisitor, typename Callback>
+struct Progress_listeners
+{
+  Visitor visitor;
+  CgalVisitor cgal_visitor;
+  Callback callback;
+  std::size_t first_phase, total;
+
+  bool operator()(const Graphcut_remeshing_progress& p)
+  {
+    const std::size_t done = p.iteration + (p.phase == Graphcut_remeshing_progress::GREEDY_FITTING ? first_phase : 0);
+    const bool go_on = visitor(p);
+    const bool cgal_go_on = cgal_visitor(p);
+    const bool callback_go_on = callback(total == 0 ? 1. : double(done) / double(total));
+    return go_on && cgal_go_on && callback_go_on;
+  }
+};
+
+// CGAL's named parameters of isotropic_remeshing() that have no meaning here are refused at
+// compile time, so that none is silently ignored.
 template <typename NamedParameters>
-Remeshing_options remeshing_options(const NamedParameters& np)
+void refuse_meaningless_parameters()
+{
+  static_assert(parameters::is_default_parameter<NamedParameters, internal_np::protect_constraints_t>::value,
+                "graphcut_isotropic_remeshing: protect_constraints is not a choice here: the edges of "
+                "edge_is_constrained_map are always protected (never flipped, split or collapsed); leave an edge "
+                "out of the map to let the remesher re-sample it as a sharp edge");
+  static_assert(parameters::is_default_parameter<NamedParameters, internal_np::collapse_constraints_t>::value,
+                "graphcut_isotropic_remeshing: collapse_constraints is not a choice here: the edges of "
+                "edge_is_constrained_map are never collapsed; leave an edge out of the map to let the remesher "
+                "re-sample it as a sharp edge");
+  static_assert(parameters::is_default_parameter<NamedParameters, internal_np::do_project_t>::value,
+                "graphcut_isotropic_remeshing: do_project has no meaning here: the data term of eq. (1) and the "
+                "tracking of the closest input point keep every vertex on the input; there is no projection "
+                "step to switch off");
+}
+
+// Named parameters to plain values; a parameter not given keeps the default of
+// Remeshing_options, where the defaults are written. `resample`: re-sampling whatever `np` says
+// (a density asked for).
+template <typename NamedParameters>
+Remeshing_options remeshing_options(const NamedParameters& np, bool resample = false)
+{
+  namespace GNP = graphcut_internal_np;
+  Remeshing_options options; // the defaults
+  // A parameter given in `np` replaces the default in `field`.
+  auto read = [&np](auto& field, auto tag) {
+    field = parameters::choose_parameter(parameters::get_parameter(np, tag), field);
+  };
+  read(options.number_of_iterations, internal_np::number_of_iterations);
+  read(options.random_seed, internal_np::random_seed);
+  read(options.weights.lambda_shape, GNP::lambda_shape);
+  read(options.weights.lambda_data, GNP::lambda_data);
+  read(options.weights.face_data_weight, GNP::face_data_weight);
+  read(options.number_of_greedy_iterations, GNP::number_of_greedy_iterations);
+  read(options.initial_temperature, GNP::initial_temperature);
+  read(options.cooling_factor, GNP::cooling_factor);
+  read(options.smoothing_step, GNP::smoothing_step);
+  read(options.do_connectivity_optimization, GNP::do_connectivity_optimization);
+  read(options.connectivity_period, GNP::connectivity_period);
+  read(options.resampling, GNP::resampling);
+  options.resampling = options.resampling || resample;
+  options.sharp_angle_bounds = options.default_sharp_angle_bounds(options.resampling, resample);
+  read(options.sharp_angle_bounds, GNP::sharp_angle_bounds);
+  read(options.do_split, internal_np::do_split);
+  read(options.do_collapse, internal_np::do_collapse);
+  read(options.do_flip, internal_np::do_flip);
+  read(options.number_of_relaxation_steps, internal_np::number_of_relaxation_steps);
+  read(options.relax_constraints, internal_np::relax_constraints);
+  return options;
+}
+
+template <typename NamedParameters>
+auto make_progress_listeners(const NamedParameters& np, const Remeshing_options& options)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  namespace GNP = graphcut_internal_np;
-  const Remeshing_options defaults;
-  Remeshing_options options;
-  options.number_of_iterations =
-    choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults.number_of_iterations);
-  options.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), defaults.random_seed);
-  options.weights.lambda_shape = choose_parameter(get_parameter(np, GNP::lambda_shape), defaults.weights.lambda_shape);
-  options.weights.lambda_data = choose_parameter(get_parameter(np, GNP::lambda_data), defaults.weights.lambda_data);
-  options.weights.face_data_weight =
-    choose_parameter(get_parameter(np, GNP::face_data_weight), defaults.weights.face_data_weight);
-  options.number_of_greedy_iterations =
-    choose_parameter(get_parameter(np, GNP::number_of_greedy_iterations), defaults.number_of_greedy_iterations);
-  options.initial_temperature =
-    choose_parameter(get_parameter(np, GNP::initial_temperature), defaults.initial_temperature);
-  options.cooling_factor = choose_parameter(get_parameter(np, GNP::cooling_factor), defaults.cooling_factor);
-  options.smoothing_step = choose_parameter(get_parameter(np, GNP::smoothing_step), defaults.smoothing_step);
-  options.do_connectivity_optimization =
-    choose_parameter(get_parameter(np, GNP::do_connectivity_optimization), defaults.do_connectivity_optimization);
-  options.connectivity_period =
-    choose_parameter(get_parameter(np, GNP::connectivity_period), defaults.connectivity_period);
-  options.sharp_angle_bounds =
-    choose_parameter(get_parameter(np, GNP::sharp_angle_bounds), defaults.sharp_angle_bounds);
-  options.resampling = choose_parameter(get_parameter(np, GNP::resampling), defaults.resampling);
-  return options;
+  auto visitor = choose_parameter(get_parameter(np, graphcut_internal_np::visitor), Default_visitor());
+  auto cgal_visitor = choose_parameter(get_parameter(np, internal_np::visitor), Default_visitor());
+  auto callback = choose_parameter(get_parameter(np, internal_np::callback), Default_callback());
+  return Progress_listeners<decltype(visitor), decltype(cgal_visitor), decltype(callback)>{
+    visitor, cgal_visitor, callback, options.number_of_iterations,
+    options.number_of_iterations + options.number_of_greedy_iterations};
 }
 
 // The sizing tolerance and edge length bounds the user gave (the mesh's units; a tolerance of 0 is
@@ -110,14 +171,20 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
   if(!validation.is_valid())
     throw Graphcut_remeshing_input_error(validation);
 
-  Remeshing_options options = remeshing_options(np);
+  refuse_meaningless_parameters<NamedParameters>();
+  Remeshing_options options = remeshing_options(np, target_edge_length > 0);
   const Sizing_request sizing = sizing_request(np);
-  auto visitor = choose_parameter(get_parameter(np, graphcut_internal_np::visitor), Default_visitor());
+  auto listeners = make_progress_listeners(np, options);
   auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, tmesh));
   auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
                               Static_boolean_property_map<edge_descriptor, false>());
   auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                               Static_boolean_property_map<vertex_descriptor, false>());
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using Face = Work_mesh::Face_index;
+  constexpr bool has_patches = !parameters::is_default_parameter<NamedParameters, internal_np::face_patch_t>::value;
+  auto face_patch =
+    choose_parameter(get_parameter(np, internal_np::face_patch), Constant_property_map<face_descriptor, int>(0));
   using GT = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
   const GT gt = choose_parameter<GT>(get_parameter(np, internal_np::geom_traits));
   const auto vertex_index = CGAL::get_initialized_vertex_index_map(tmesh, np);
@@ -133,11 +200,7 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
   }
   options.edge_length_bounds = {copy.to_unit_length(sizing.bounds.first), copy.to_unit_length(sizing.bounds.second)};
   if(target_edge_length > 0)
-  {
-    // A density asked for: only re-sampling reaches it.
-    options.resampling = true;
     options.target_edge_length = copy.to_unit_length(target_edge_length);
-  }
   // Re-sampling bounds how far a shortened feature line leaves the removed vertex and keeps a turn
   // beyond the upper sharp bound, and follows fading creases; without it, a strong crease keeps
   // every turn of its own.
@@ -145,10 +208,10 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
   // Coarsening: the lines of the input's sampling that are short at the target's scale go.
   const double shortest_sharp_line =
     options.target_edge_length > mean_edge_length(work) ? short_sharp_line_to_target * options.target_edge_length : 0;
-  auto features =
-    copy.features(work, ecm, options.sharp_angle_bounds, crease_turn_angle, options.resampling, shortest_sharp_line);
+  auto features = copy.features(work, ecm, face_patch, options.sharp_angle_bounds, crease_turn_angle,
+                                options.resampling, options.relax_constraints, shortest_sharp_line);
   Graphcut_remesher remesher(work, std::move(features.first), std::move(features.second), options);
-  Graphcut_remeshing_statistics stats = remesher.run(visitor);
+  Graphcut_remeshing_statistics stats = remesher.run(listeners);
 #ifndef CGAL_NO_POSTCONDITIONS
   {
     // Debug builds: what the method promises, after every run, cancelled or not.
@@ -159,7 +222,7 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
   if(stats.number_of_flips + stats.number_of_splits + stats.number_of_collapses + stats.number_of_vertex_splits == 0)
     copy.copy_positions_back(work);
   else
-    copy.copy_mesh_back(work, ecm, vcm);
+    copy.copy_mesh_back(work, ecm, vcm, face_patch, has_patches ? remesher.reference_faces_below() : std::vector<Face>());
   return stats;
 }
 
@@ -186,14 +249,17 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
  * upper bound of the energy that is exact at the current positions. No move creates a degenerate
  * triangle or turns a triangle over.
  *
- * Every `connectivity_period` iterations of the first phase, the connectivity is improved as in
- * the paper's section 3: edge flips, splits of long edges, collapses of short edges in flat
- * regions and vertex splits, each kept only when it improves its own criterion and only where the
- * valence can improve, then a tangential relaxation of the vertex positions. Feature edges are
- * never flipped or collapsed, and no edge next to one is collapsed; a long sharp edge may be split
- * at a point of its input polyline (border and constrained edges never are). The number of
- * vertices adapts to the local curvature but stays of the order of the input's. When the connectivity changes,
- * `tmesh` is rebuilt: its elements are replaced, and the constrained maps are updated.
+ * Every `connectivity_period` iterations of the first phase, the connectivity changes. By
+ * default (`resampling`) the surface is re-sampled to a curvature-adapted sizing field around the
+ * input's mean edge length, as `isotropic_remeshing()` does: edges longer than 4/3 of their target
+ * are split and shorter than 4/5 collapsed, also along sharp lines and borders, as long as the new
+ * triangles stay near the input; flips follow, and a tangential relaxation of the vertex
+ * positions. With `resampling(false)`, the paper's section 3: edge flips, splits of long edges,
+ * collapses of short edges in flat regions and vertex splits, each kept only when it improves its
+ * own criterion and only where the valence can improve, then the relaxation; the number of
+ * vertices then stays of the order of the input's. The edges of `edge_is_constrained_map` are
+ * never flipped, split or collapsed. When the connectivity changes, `tmesh` is rebuilt: its
+ * elements are replaced, and the constrained maps are updated.
  *
  * @tparam TriangleMesh a model of `MutableFaceGraph`, `FaceListGraph`, `VertexListGraph` and
  *         `EdgeListGraph` (the mesh is rebuilt when its connectivity changes)
@@ -238,8 +304,60 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
  *                    as key type and `bool` as value type}
  *     \cgalParamDefault{no vertex is constrained}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{face_patch_map}
+ *     \cgalParamDescription{a property map with the patch of each face; the edges between two
+ *                           patches are sharp edges (feature lines), whatever their angle. The new
+ *                           faces take the patch of the input face below their centroid}
+ *     \cgalParamType{a class model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+ *                    as key type and the patch id (comparable with `!=`) as value type}
+ *     \cgalParamDefault{one patch: no edge is a feature for this reason}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{relax_constraints}
+ *     \cgalParamDescription{whether the vertices of the edges of `edge_is_constrained_map` slide
+ *                           along them; with `false` they never move}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{do_split}
+ *     \cgalParamDescription{whether the connectivity passes split edges (and split vertices, which
+ *                           also adds a vertex); with `false`, the vertex count never grows}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{do_collapse}
+ *     \cgalParamDescription{whether the connectivity passes collapse edges}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{do_flip}
+ *     \cgalParamDescription{whether the connectivity passes flip edges}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_relaxation_steps}
+ *     \cgalParamDescription{the number of tangential relaxation sweeps that end each connectivity
+ *                           pass}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{`1`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{visitor}
+ *     \cgalParamDescription{\cgal's own `visitor` parameter, honoured as `graphcut_parameters::visitor`
+ *                           (both may be given; either returning `false` ends the run)}
+ *     \cgalParamType{a callable `bool(const Graphcut_remeshing_progress&)`}
+ *     \cgalParamDefault{a visitor that never ends the run}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{callback}
+ *     \cgalParamDescription{called after each iteration with the fraction of the iterations done,
+ *                           in [0, 1], as \cgal's algorithms with a `callback` do; returning
+ *                           `false` ends the run, leaving a valid mesh}
+ *     \cgalParamType{a callable `bool(double)`}
+ *     \cgalParamDefault{a callback that never ends the run}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_iterations}
- *     \cgalParamDescription{the number of iterations of the first, non-greedy phase}
+ *     \cgalParamDescription{the number of iterations of the first, non-greedy phase; when it is
+ *                           smaller than `connectivity_period`, one connectivity pass ends the
+ *                           phase (before the greedy phase when it is 0), so that the density is
+ *                           reached whatever the count}
  *     \cgalParamType{`std::size_t`}
  *     \cgalParamDefault{`150`}
  *   \cgalParamNEnd
@@ -281,7 +399,8 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
  *                           vertex is tracked to its closest input point, and a border that
  *                           turns by more than theta_true at a vertex makes it a corner}
  *     \cgalParamType{`std::pair<double, double>`}
- *     \cgalParamDefault{`(20, 35)`}
+ *     \cgalParamDefault{`(20, 50)`; the paper's `(20, 35)` without re-sampling and in the call with a
+ *                       target edge length}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{graphcut_parameters::initial_temperature}
  *     \cgalParamDescription{T(1) of the cooling schedule of the freedom sphere}
@@ -319,9 +438,11 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
  *   \cgalParamNBegin{graphcut_parameters::resampling}
  *     \cgalParamDescription{whether the connectivity passes re-sample the surface to a
  *                           curvature-adapted sizing field (splits and collapses also where the
- *                           surface is curved and along feature lines and borders)}
+ *                           surface is curved and along feature lines and borders); `false` gives
+ *                           the paper's own connectivity stage (flips, splits and collapses in flat
+ *                           regions, vertex splits), whose results the paper's Table 1 lists}
  *     \cgalParamType{`bool`}
- *     \cgalParamDefault{`false`}
+ *     \cgalParamDefault{`true`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{graphcut_parameters::sizing_tolerance}
  *     \cgalParamDescription{how far, in the units of `tmesh`'s points, the triangles may leave the
@@ -348,6 +469,10 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
  *                       length (the input's mean edge length without one)}
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
+ *
+ * \cgal's `protect_constraints`, `collapse_constraints` and `do_project` are refused at compile
+ * time (a `static_assert` says why): the edges of `edge_is_constrained_map` are always protected,
+ * and the data term, not a projection step, keeps the vertices on the input.
  *
  * \return the energies before and after each iteration, and counts
  *

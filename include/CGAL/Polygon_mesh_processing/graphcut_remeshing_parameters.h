@@ -219,7 +219,8 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(do_connectivity_optimization)
  * split and shorter than 4/5 collapsed, also where the surface is curved and along feature lines
  * and borders, as long as the new triangles stay near the input. The target lengths follow the
  * input's curvature, between half and twice its mean edge length (half and 5/4 of a target length
- * asked for), for about as many triangles as the mean length would make.
+ * asked for), for about as many triangles as the mean length would make. On by default; `false`
+ * gives the paper's own connectivity stage, whose results the paper's Table 1 lists.
  *
  * \tparam T `bool`
  * \param value whether to re-sample

@@ -86,6 +86,16 @@ struct Connectivity_counts
   std::size_t relaxed = 0;
 };
 
+// Which operations a pass makes (CGAL's do_split, which also covers the vertex splits that add
+// a vertex, do_collapse and do_flip) and how many relaxation sweeps end it.
+struct Connectivity_operations
+{
+  bool split = true;
+  bool collapse = true;
+  bool flip = true;
+  std::size_t relaxation_steps = 1;
+};
+
 class Connectivity_optimizer
 {
   using Vertex = Work_mesh::Vertex_index;
@@ -129,9 +139,10 @@ public:
   Connectivity_optimizer(Work_mesh& mesh, const Reference_surface<Work_mesh>& reference,
                          Tracking_state& state, const Sizing& sizing,
                          const Feature_polylines<Work_mesh>* polylines = nullptr,
-                         Local_energy local_energy = Local_energy())
+                         Local_energy local_energy = Local_energy(),
+                         Connectivity_operations operations = Connectivity_operations())
     : m_mesh(mesh), m_reference(reference), m_state(state), m_sizing(sizing), m_polylines(polylines),
-      m_local_energy(std::move(local_energy))
+      m_local_energy(std::move(local_energy)), m_operations(operations)
   {
     fit_arrays();
   }
@@ -143,22 +154,24 @@ public:
   Connectivity_counts run()
   {
     Connectivity_counts counts;
+    const Connectivity_operations& op = m_operations;
     if(m_sizing.resamples())
     {
-      counts.splits = split_edges();
-      counts.collapses = collapse_edges();
-      if(m_sizing.covers_reference)
+      counts.splits = op.split ? split_edges() : 0;
+      counts.collapses = op.collapse ? collapse_edges() : 0;
+      if(m_sizing.covers_reference && op.split)
         counts.splits += cover_reference();
-      counts.flips = flip_edges();
+      counts.flips = op.flip ? flip_edges() : 0;
     }
     else
     {
-      counts.flips = flip_edges();
-      counts.splits = split_edges();
-      counts.collapses = collapse_edges();
+      counts.flips = op.flip ? flip_edges() : 0;
+      counts.splits = op.split ? split_edges() : 0;
+      counts.collapses = op.collapse ? collapse_edges() : 0;
     }
-    counts.vertex_splits = split_vertices();
-    counts.relaxed = relax();
+    counts.vertex_splits = op.split ? split_vertices() : 0;
+    for(std::size_t k = 0; k < op.relaxation_steps; ++k)
+      counts.relaxed += relax();
     return counts;
   }
 
@@ -168,6 +181,8 @@ public:
   Connectivity_counts cover_what_stands_out()
   {
     Connectivity_counts counts;
+    if(!m_operations.split)
+      return counts;
     counts.splits = cover_reference();
     counts.splits += cover_chords();
     return counts;
@@ -1417,6 +1432,7 @@ private:
   const Sizing& m_sizing;
   const Feature_polylines<Work_mesh>* m_polylines;
   Local_energy m_local_energy;
+  Connectivity_operations m_operations;
 };
 
 } // namespace Graphcut_remeshing

@@ -43,6 +43,7 @@
 #include <array>
 #ifdef CGAL_GRAPHCUT_REMESHING_VERBOSE
 #include <iostream>
+#include <limits>
 #endif
 #include <cstddef>
 #include <string>
@@ -67,18 +68,21 @@ struct Remeshing_options
   unsigned int random_seed = 0;
   bool do_connectivity_optimization = true;
   std::size_t connectivity_period = 5;
-  // theta_false and theta_true of eq. (8), in degrees. Beyond the paper: reference triangles
-  // within theta_false count as one smooth sheet for tracking, and a border that turns by more
-  // than theta_true is a corner.
-  std::pair<double, double> sharp_angle_bounds{20, 35};
+  // theta_false and theta_true of eq. (8), in degrees, when the surface is re-sampled at the
+  // input's density (they measure best there); `paper_sharp_angle_bounds`, the paper's own, with
+  // its connectivity and at a density asked for (default_sharp_angle_bounds()).
+  // Beyond the paper: reference triangles within theta_false count as one smooth sheet for
+  // tracking, and a border that turns by more than theta_true is a corner.
+  std::pair<double, double> sharp_angle_bounds{20, 50};
+  std::pair<double, double> paper_sharp_angle_bounds{20, 35};
   // The largest distance (unit box) a chord of the target edge length may keep from a curved
   // reference; it shortens the target length where the surface is curved (section 3.1's e_min,
   // e_max depend on the local curvature).
   double sizing_tolerance = 3e-3;
   // Beyond the paper: the connectivity stage re-samples the surface to a curvature-adapted sizing
   // field (sizing.h's curvature_sizing()), collapsing and splitting also where it is curved and
-  // along feature lines and borders.
-  bool resampling = false;
+  // along feature lines and borders. Without it, the paper's connectivity stage.
+  bool resampling = true;
   // The edge length the re-sampling aims at (unit box), or 0 for the input's mean edge length.
   double target_edge_length = 0;
   // The user gave the sizing tolerance (graphcut_parameters::sizing_tolerance): re-sampling then
@@ -87,7 +91,23 @@ struct Remeshing_options
   // many triangles as the target length would (sizing.h).
   bool error_bounded_sizing = false;
   std::pair<double, double> edge_length_bounds{0, 0};
+  // CGAL's switches of isotropic_remeshing(): which operations the connectivity passes make, how
+  // many relaxation sweeps end a pass, and whether the vertices of the user's constrained edges
+  // slide along them (else they stay).
+  bool do_split = true;
+  bool do_collapse = true;
+  bool do_flip = true;
+  std::size_t number_of_relaxation_steps = 1;
+  bool relax_constraints = true;
   static constexpr double shortest_to_target = 0.25;
+
+  // The sharp-angle bounds when the user gives none: `sharp_angle_bounds` when re-sampling at the
+  // input's density, the paper's without re-sampling and at a density asked for (where they keep
+  // the coarse triangles nearer the input).
+  std::pair<double, double> default_sharp_angle_bounds(bool with_resampling, bool density_asked_for) const
+  {
+    return with_resampling && !density_asked_for ? sharp_angle_bounds : paper_sharp_angle_bounds;
+  }
 };
 
 class Graphcut_remesher
@@ -148,21 +168,15 @@ public:
     for(const auto& phase : phases)
     {
       const bool greedy = phase.first == Graphcut_remeshing_progress::GREEDY_FITTING;
+      if(greedy && m_options.number_of_iterations == 0 && connectivity_due(0))
+        connectivity_pass_between_iterations(stats);
       for(std::size_t k = 1; k <= phase.second; ++k)
       {
         const double t = temperature(m_options.initial_temperature, m_options.cooling_factor, k);
         stats.number_of_moves += relocate(t, greedy);
         ++stats.number_of_iterations;
-        // Section 3, every connectivity_period iterations of the first phase.
-        if(!greedy && m_options.do_connectivity_optimization && m_options.connectivity_period > 0 &&
-           k % m_options.connectivity_period == 0)
-        {
-          m_cut.release();
-          connectivity_pass(stats);
-          m_energy.compute_terms();
-          m_tracking.mark_all(); // new triangles, relaxed vertices
-          stats.connectivity_passes.push_back(stats.number_of_iterations);
-        }
+        if(!greedy && connectivity_due(k))
+          connectivity_pass_between_iterations(stats);
         stats.energies.push_back(energy());
 
         Graphcut_remeshing_progress progress;
@@ -189,6 +203,24 @@ public:
         m_tracking.mark_all();
       }
     return stats;
+  }
+
+  void connectivity_pass_between_iterations(Graphcut_remeshing_statistics& stats)
+  {
+    m_cut.release();
+    connectivity_pass(stats);
+    m_energy.compute_terms();
+    m_tracking.mark_all(); // new triangles, relaxed vertices
+    stats.connectivity_passes.push_back(stats.number_of_iterations);
+  }
+
+  // Section 3, every connectivity_period iterations of the first phase, and once at its end when
+  // it is shorter than the period (before the greedy phase when it has no iteration), so that the
+  // density asked for is reached whatever the count.
+  bool connectivity_due(std::size_t k) const
+  {
+    const std::size_t period = m_options.connectivity_period, n = m_options.number_of_iterations;
+    return m_options.do_connectivity_optimization && period > 0 && (k % period == 0 || (n < period && k == n));
   }
 
   // One iteration of Algorithm 1's inner loop: track the closest reference vertices, propose a
@@ -232,6 +264,31 @@ public:
       for(std::size_t i = 0; i < c.moving.size(); ++i)
         set_position(c.moving[i], previous[i]);
     }
+  }
+
+  // By face of the mesh: the reference triangle nearest its centroid, the nearest found from the
+  // reference triangles of its three vertices (a face next to a sharp edge may have a vertex
+  // tracked on the other side); none for a removed face.
+  std::vector<Face> reference_faces_below() const
+  {
+    std::vector<Face> below(m_mesh.num_faces(), Work_mesh::null_face());
+    for(Face f : m_mesh.faces())
+    {
+      const auto v = face_vertices(m_mesh, f);
+      const Vector_3d c = (position(v[0]) + position(v[1]) + position(v[2])) / 3;
+      double nearest = std::numeric_limits<double>::infinity();
+      for(Vertex u : v)
+      {
+        Face hint = m_state.vertex_hint[std::size_t(u)];
+        const double d = (m_reference.closest_point(c, hint) - c).squaredNorm();
+        if(d < nearest)
+        {
+          nearest = d;
+          below[std::size_t(f)] = hint;
+        }
+      }
+    }
+    return below;
   }
 
   // The first guarantee the working mesh breaks (guarantees.h), or an empty string; also no
@@ -279,7 +336,9 @@ public:
       Connectivity_optimizer optimizer(m_mesh, m_reference, m_state, m_sizing, &m_polylines,
                                        [this](Vertex v, const Vector_3d& x, double bound) {
                                          return m_energy.local_evidence(v, x, bound);
-                                       });
+                                       },
+                                       Connectivity_operations{m_options.do_split, m_options.do_collapse,
+                                                               m_options.do_flip, m_options.number_of_relaxation_steps});
       const Connectivity_counts counts = covering_only ? optimizer.cover_what_stands_out() : optimizer.run();
       m_energy.collect_feature_edges();
       // The mesh had no new intersections before the pass: only triangles it changed or moved

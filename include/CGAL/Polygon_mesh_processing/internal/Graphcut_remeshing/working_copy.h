@@ -20,7 +20,6 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
-#include <CGAL/use.h>
 
 #include <algorithm>
 #include <array>
@@ -104,18 +103,29 @@ public:
   // (see detect_sharp_edges()); sharp lines shorter than `shortest_sharp_line` are dropped (see
   // drop_short_sharp_lines()), and so are the border's corners closer than it to a stronger one
   // (see merge_close_border_corners()).
-  template <typename EdgeConstrainedMap>
+  // The edges between two faces of different patches of `face_patch` are sharp edges too; with
+  // `relax_constraints` false, the vertices of the user's constrained edges are fixed.
+  template <typename EdgeConstrainedMap, typename FacePatchMap>
   std::pair<std::vector<char>, std::vector<Vertex_kind> > features(const Work_mesh& work, const EdgeConstrainedMap& ecm,
+                                                                   const FacePatchMap& face_patch,
                                                                    const std::pair<double, double>& sharp_bounds,
                                                                    double crease_turn_angle, bool follow_creases,
-                                                                   double shortest_sharp_line = 0)
+                                                                   bool relax_constraints, double shortest_sharp_line = 0)
   {
     std::vector<char> feature_edge = detect_sharp_edges(work, sharp_bounds.first, sharp_bounds.second, follow_creases);
     if(shortest_sharp_line > 0)
       drop_short_sharp_lines(work, shortest_sharp_line, feature_edge);
     for(auto e : work.edges())
       if(work.is_border(e))
-        feature_edge[std::size_t(e)] = 1;
+        feature_edge[std::size_t(e)] = sharp_or_border_feature_edge;
+    for(face_descriptor f : m_region)
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, m_tmesh), m_tmesh))
+      {
+        const face_descriptor g = face(opposite(h, m_tmesh), m_tmesh);
+        if(g != boost::graph_traits<TriangleMesh>::null_face() && m_in_region(g) && get(face_patch, f) != get(face_patch, g))
+          feature_edge[std::size_t(work.edge(work.halfedge(to_work(source(h, m_tmesh)), to_work(target(h, m_tmesh)))))] =
+            sharp_or_border_feature_edge;
+      }
     for(const auto& seam : m_seam_edges)
       feature_edge[std::size_t(work.edge(work.halfedge(seam.first, seam.second)))] = Tracking_state::constrained_edge;
     for(face_descriptor f : m_region)
@@ -125,6 +135,8 @@ public:
           const auto wh = work.halfedge(to_work(source(h, m_tmesh)), to_work(target(h, m_tmesh)));
           feature_edge[std::size_t(work.edge(wh))] = Tracking_state::constrained_edge;
           m_user_edges.emplace_back(work.source(wh), work.target(wh));
+          if(!relax_constraints)
+            m_constrained_vertex[std::size_t(work.source(wh))] = m_constrained_vertex[std::size_t(work.target(wh))] = 1;
         }
     std::vector<Vertex_kind> kind =
       classify_vertices(work, feature_edge, m_constrained_vertex, sharp_bounds.second, crease_turn_angle);
@@ -151,9 +163,17 @@ public:
   // to the input's scale), with the constrained maps updated. Feature and fixed vertices are never
   // removed, so a working vertex of an input index still at its input position is that input
   // vertex, and keeps its exact coordinates.
-  template <typename EdgeConstrainedMap, typename VertexConstrainedMap>
-  void copy_mesh_back(Work_mesh& work, EdgeConstrainedMap& ecm, VertexConstrainedMap& vcm)
+  // `face_patch` takes, for each new face, the patch of the input face below it: the one from
+  // which the working copy made the reference face `below[f]` (by working face; empty: no patches).
+  template <typename EdgeConstrainedMap, typename VertexConstrainedMap, typename FacePatchMap>
+  void copy_mesh_back(Work_mesh& work, EdgeConstrainedMap& ecm, VertexConstrainedMap& vcm, FacePatchMap& face_patch,
+                      const std::vector<Work_mesh::Face_index>& below)
   {
+    using Patch = typename boost::property_traits<FacePatchMap>::value_type;
+    std::vector<Patch> patch; // by working face; a removed one has no reference face below it
+    patch.reserve(below.size());
+    for(Work_mesh::Face_index r : below)
+      patch.push_back(r == Work_mesh::null_face() ? Patch() : get(face_patch, m_input_face[std::size_t(r)]));
     std::vector<Point> exact(work.num_vertices());
     std::vector<char> is_exact(work.num_vertices(), 0);
     for(std::size_t i = 0; i < m_input_vertices.size(); ++i)
@@ -170,10 +190,15 @@ public:
       const Vector_3d p = m_normalization.from_unit(to_vector(work.point(w)));
       work.point(w) = Work_kernel::Point_3(p.x(), p.y(), p.z());
     }
+    const std::function<void(Work_mesh::Face_index, face_descriptor)> put_patch =
+      [&](Work_mesh::Face_index w, face_descriptor f) {
+        if(!patch.empty())
+          put(face_patch, f, patch[std::size_t(w)]);
+      };
     if(m_whole)
-      copy_whole_back(work, exact, is_exact, ecm, vcm);
+      copy_whole_back(work, exact, is_exact, ecm, vcm, put_patch);
     else
-      replace_region(work, exact, is_exact, ecm, vcm);
+      replace_region(work, exact, is_exact, ecm, vcm, put_patch);
   }
 
 private:
@@ -181,16 +206,21 @@ private:
   // stay alive) and receives the working mesh.
   template <typename EdgeConstrainedMap, typename VertexConstrainedMap>
   void copy_whole_back(const Work_mesh& work, const std::vector<Point>& exact, const std::vector<char>& is_exact,
-                       EdgeConstrainedMap& ecm, VertexConstrainedMap& vcm)
+                       EdgeConstrainedMap& ecm, VertexConstrainedMap& vcm,
+                       const std::function<void(Work_mesh::Face_index, face_descriptor)>& put_patch)
   {
     for(face_descriptor f : m_region)
       CGAL::Euler::remove_face(halfedge(f, m_tmesh), m_tmesh);
     std::vector<std::pair<Work_vertex, vertex_descriptor> > v2v;
     std::vector<std::pair<Work_mesh::Halfedge_index, halfedge_descriptor> > h2h;
+    std::vector<std::pair<Work_mesh::Face_index, face_descriptor> > f2f;
     CGAL::copy_face_graph(work, m_tmesh,
                           parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v))
-                            .halfedge_to_halfedge_output_iterator(std::back_inserter(h2h)),
+                            .halfedge_to_halfedge_output_iterator(std::back_inserter(h2h))
+                            .face_to_face_output_iterator(std::back_inserter(f2f)),
                           parameters::vertex_point_map(m_vpm));
+    for(const auto& p : f2f)
+      put_patch(p.first, p.second);
     std::vector<vertex_descriptor> user(work.num_vertices());
     for(const auto& p : v2v)
     {
@@ -225,7 +255,8 @@ private:
   // vertices, which are the input's own; the rest of the mesh is not touched.
   template <typename EdgeConstrainedMap, typename VertexConstrainedMap>
   void replace_region(const Work_mesh& work, const std::vector<Point>& exact, const std::vector<char>& is_exact,
-                      EdgeConstrainedMap& ecm, VertexConstrainedMap& vcm)
+                      EdgeConstrainedMap& ecm, VertexConstrainedMap& vcm,
+                      const std::function<void(Work_mesh::Face_index, face_descriptor)>& put_patch)
   {
     // The seam's vertices, found before the other vertices of the range are removed.
     std::vector<vertex_descriptor> user(work.num_vertices());
@@ -256,7 +287,7 @@ private:
                                                 user[std::size_t(work.target(work.next(h)))]}};
       const face_descriptor added = CGAL::Euler::add_face(t, m_tmesh);
       CGAL_assertion(added != boost::graph_traits<TriangleMesh>::null_face());
-      CGAL_USE(added);
+      put_patch(f, added);
     }
     // The seam's edges are the user's own, with their flags.
     for(Work_mesh::Edge_index e : work.edges())
@@ -348,21 +379,25 @@ private:
     }
   }
 
-  void add_faces(Work_mesh& work) const
+  void add_faces(Work_mesh& work)
   {
-    std::vector<std::pair<std::size_t, std::array<Work_vertex, 3> > > input_faces;
-    input_faces.reserve(m_region.size());
-    for(face_descriptor f : m_region)
+    std::vector<std::pair<std::size_t, std::size_t> > order; // (first working vertex, region face)
+    order.reserve(m_region.size());
+    for(std::size_t i = 0; i < m_region.size(); ++i)
     {
-      const auto h = halfedge(f, m_tmesh);
-      const std::array<Work_vertex, 3> t{
-        {to_work(source(h, m_tmesh)), to_work(target(h, m_tmesh)), to_work(target(next(h, m_tmesh), m_tmesh))}};
-      input_faces.emplace_back(std::size_t((std::min)({t[0], t[1], t[2]})), t);
+      const auto h = halfedge(m_region[i], m_tmesh);
+      order.emplace_back(std::size_t((std::min)(
+                           {to_work(source(h, m_tmesh)), to_work(target(h, m_tmesh)), to_work(target(next(h, m_tmesh), m_tmesh))})),
+                         i);
     }
-    std::stable_sort(input_faces.begin(), input_faces.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    for(const auto& f : input_faces)
-      work.add_face(f.second[0], f.second[1], f.second[2]);
+    std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    m_input_face.reserve(order.size());
+    for(const auto& o : order)
+    {
+      const auto h = halfedge(m_region[o.second], m_tmesh);
+      work.add_face(to_work(source(h, m_tmesh)), to_work(target(h, m_tmesh)), to_work(target(next(h, m_tmesh), m_tmesh)));
+      m_input_face.push_back(m_region[o.second]);
+    }
   }
 
   TriangleMesh& m_tmesh;
@@ -370,6 +405,7 @@ private:
   VertexIndexMap m_vertex_index;
   Construct_point m_construct_point;
   std::vector<face_descriptor> m_region;      // the faces remeshed
+  std::vector<face_descriptor> m_input_face;  // by working face as made: the region's face it copies
   bool m_whole = true;                        // the region is the whole mesh
   std::vector<std::pair<Work_vertex, Work_vertex> > m_seam_edges;
   std::vector<char> m_on_seam;                // by working vertex: shared with faces outside the region
