@@ -10,6 +10,11 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/graphcut_isotropic_remeshing.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/connectivity.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/edge_collapses.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/edge_flips.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/edge_splits.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/relaxation.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/vertex_splits.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/guarantees.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/intersections.h>
 #include <CGAL/Polygon_mesh_processing/mesh_quality_report.h>
@@ -97,7 +102,7 @@ public:
     double total = 0;
     for(auto e : mesh.edges())
       total += (point(mesh.source(mesh.halfedge(e))) - point(mesh.target(mesh.halfedge(e)))).norm();
-    sizing.mean_length = length_factor * total / double(mesh.number_of_edges());
+    sizing.longest = length_factor * total / double(mesh.number_of_edges());
     sizing.tolerance = 3e-3;
     input_feature_edges = feature_edges();
   }
@@ -112,10 +117,12 @@ public:
   }
 
   // Without the polylines, as most tests here: no sharp edge is split.
+  GR::Local_operations operations() { return GR::Local_operations(mesh, reference, state, sizing); }
+  GR::Local_operations operations_with_features() { return GR::Local_operations(mesh, reference, state, sizing, &polylines); }
   GR::Connectivity_optimizer optimizer() { return GR::Connectivity_optimizer(mesh, reference, state, sizing); }
-  GR::Connectivity_optimizer optimizer_with_features(GR::Connectivity_optimizer::Local_energy energy = {})
+  GR::Connectivity_optimizer optimizer_with_features()
   {
-    return GR::Connectivity_optimizer(mesh, reference, state, sizing, &polylines, std::move(energy));
+    return GR::Connectivity_optimizer(mesh, reference, state, sizing, &polylines);
   }
 
   GR::Vector_3d point(Work::Vertex_index v) const { return GR::to_vector(mesh.point(v)); }
@@ -177,7 +184,7 @@ public:
   const std::vector<GR::Vertex_kind> reference_kind;
   GR::Feature_polylines<Work> polylines;
   GR::Tracking_state state;
-  GR::Sizing sizing;
+  GR::Sizing_field sizing;
   std::set<std::pair<std::size_t, std::size_t> > input_feature_edges;
 };
 
@@ -298,7 +305,7 @@ std::vector<Named_mesh> scrambled_meshes()
   return meshes;
 }
 
-// --- re-sampling (Sizing::resamples()): splits and collapses to a curvature-adapted sizing ---
+// --- re-sampling (Sizing_field::resamples()): splits and collapses to a curvature-adapted sizing ---
 
 std::size_t border_cycles(const Work& m)
 {
@@ -486,7 +493,7 @@ TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)
   for(const Work* m : {&bent, &sphere})
   {
     const double mean = GR::mean_edge_length(*m);
-    const GR::Sizing sizing = GR::curvature_sizing(*m, Pass_setup::features_of(*m, true), mean, 35,
+    const GR::Sizing_field sizing = GR::curvature_sizing(*m, Pass_setup::features_of(*m, true), mean, 35,
                                                    GR::longest_to_mean_length);
     ASSERT_TRUE(sizing.resamples());
     const std::vector<double> area = GR::vertex_areas(*m);
@@ -494,27 +501,27 @@ TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)
     for(auto v : m->vertices())
     {
       budget += area[std::size_t(v)] / (mean * mean);
-      spent += area[std::size_t(v)] / (sizing.length(v) * sizing.length(v));
-      EXPECT_GE(sizing.length(v), 0.45 * mean);
-      EXPECT_LE(sizing.length(v), 2.2 * mean);
+      spent += area[std::size_t(v)] / (sizing.target[std::size_t(v)] * sizing.target[std::size_t(v)]);
+      EXPECT_GE(sizing.target[std::size_t(v)], 0.45 * mean);
+      EXPECT_LE(sizing.target[std::size_t(v)], 2.2 * mean);
     }
     EXPECT_NEAR(spent, budget, 1e-6 * budget);
     if(m == &sphere)
     {
       for(auto v : m->vertices())
-        EXPECT_NEAR(sizing.length(v), mean, 0.1 * mean);
+        EXPECT_NEAR(sizing.target[std::size_t(v)], mean, 0.1 * mean);
     }
   }
-  const GR::Sizing sizing = GR::curvature_sizing(bent, Pass_setup::features_of(bent, true), GR::mean_edge_length(bent),
+  const GR::Sizing_field sizing = GR::curvature_sizing(bent, Pass_setup::features_of(bent, true), GR::mean_edge_length(bent),
                                                  35, GR::longest_to_mean_length);
   double flat = 0, curved = 0;
   for(auto v : bent.vertices())
   {
     const double x = bent.point(v).x();
     if(x < 0.2)
-      flat = (std::max)(flat, sizing.length(v));
+      flat = (std::max)(flat, sizing.target[std::size_t(v)]);
     if(x > 0.8)
-      curved = (std::max)(curved, sizing.length(v));
+      curved = (std::max)(curved, sizing.target[std::size_t(v)]);
   }
   EXPECT_LT(curved, 0.9 * flat);
 }
@@ -534,15 +541,15 @@ TEST(Connectivity_pass, ResamplingBringsTheEdgesToTheirTargets)
       for(int pass = 0; pass < 4; ++pass)
       {
         const Work before = s.mesh;
-        s.optimizer_with_features().run();
+        s.optimizer_with_features().connectivity_pass();
         expect_resampling_guarantees(s, before, 0.6 * factor * mean, name + " pass " + std::to_string(pass));
       }
       std::size_t in_band = 0;
       for(auto e : s.mesh.edges())
       {
         const auto a = s.mesh.source(s.mesh.halfedge(e)), b = s.mesh.target(s.mesh.halfedge(e));
-        const double target = (std::min)(s.sizing.length(s.state.closest[std::size_t(a)]),
-                                         s.sizing.length(s.state.closest[std::size_t(b)]));
+        const double target =
+          s.sizing.edge_target(s.state.closest[std::size_t(a)], s.state.closest[std::size_t(b)], s.reference);
         const double l = (s.point(a) - s.point(b)).norm();
         in_band += l > 0.5 * target && l < 1.5 * target ? 1 : 0;
       }
@@ -573,18 +580,19 @@ TEST(Connectivity_pass, CoarseCollapsesKeepWhatTheyRemoveNearTheNewTriangles)
     }));
     Pass_setup s(grid);
     ASSERT_EQ(s.input_feature_edges.size(), 44u) << "scale " << scale; // the border's only
-    s.sizing.mean_length = 4 * spacing;
+    s.sizing.longest = 4 * spacing;
     s.sizing.tolerance = 0.6 * height;
     s.sizing.corner_angle = 35;
     s.sizing.target.assign(grid.num_vertices(), 4 * spacing);
     s.sizing.target_asked_for = s.sizing.into_lines = true;
-    GR::Connectivity_optimizer optimizer = s.optimizer_with_features();
+    const GR::Edge_collapses collapses(s.operations_with_features());
     std::size_t made = 0;
     for(auto e : s.mesh.edges())
     {
-      GR::Connectivity_optimizer::Collapse c;
-      if(!(optimizer.resampling_collapse_gain(e, c) > 0))
+      const GR::Edge_collapses::Plan plan = collapses.resampling_plan(e);
+      if(!(plan.gain > 0))
         continue;
+      const GR::Collapse& c = plan.collapse;
       ++made;
       const GR::Vector_3d was = s.point(c.kept);
       double gone_excess = std::numeric_limits<double>::infinity(), was_excess = was == c.point ? 0 : gone_excess;
@@ -624,7 +632,7 @@ TEST(Connectivity_pass, KeepsTheGuaranteesOnSeveralMeshes)
       for(int pass = 0; pass < 3; ++pass)
       {
         const Work before = s.mesh;
-        const GR::Connectivity_counts c = s.optimizer().run();
+        const GR::Connectivity_counts c = s.optimizer().connectivity_pass();
         expect_pass_guarantees(s, before, name + " pass " + std::to_string(pass));
         total.flips += c.flips;
         total.splits += c.splits;
@@ -645,7 +653,7 @@ TEST(Connectivity_pass, FlipsLowerTheValenceDeviation)
   {
     Pass_setup s(input.mesh);
     const int before = valence_deviation(s.mesh);
-    const std::size_t flips = s.optimizer().flip_edges();
+    const std::size_t flips = GR::Edge_flips(s.operations()).run();
     EXPECT_GT(flips, 10u) << input.name;
     EXPECT_LT(valence_deviation(s.mesh), before - int(flips) / 2) << input.name;
   }
@@ -660,7 +668,7 @@ TEST(Connectivity_pass, FlipRuleOnEveryEdge)
   for(const Named_mesh& input : scrambled_meshes())
   {
     Pass_setup s(input.mesh);
-    const GR::Connectivity_optimizer optimizer = s.optimizer();
+    const GR::Edge_flips flips(s.operations());
     const Work& m = s.mesh;
     auto deviation = [&m](Work::Vertex_index v, int delta) {
       const int target = m.is_border(v) ? 4 : 6;
@@ -675,7 +683,7 @@ TEST(Connectivity_pass, FlipRuleOnEveryEdge)
       const auto a = m.source(h), b = m.target(h), c = m.target(m.next(h)), d = m.target(m.next(o));
       const int change = deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1) -
                          deviation(a, 0) - deviation(b, 0) - deviation(c, 0) - deviation(d, 0);
-      const double gain = optimizer.flip_gain(e);
+      const double gain = flips.flip_gain(e);
       if(change > 0)
       {
         ++worse;
@@ -689,7 +697,7 @@ TEST(Connectivity_pass, FlipRuleOnEveryEdge)
         const double after = (std::min)(GR::smallest_angle(s.point(a), s.point(d), s.point(c)),
                                         GR::smallest_angle(s.point(d), s.point(b), s.point(c)));
         EXPECT_GT(after, before) << input.name;
-        EXPECT_NEAR(gain, after - before - GR::Connectivity_optimizer::min_angle_margin, 1e-12) << input.name;
+        EXPECT_NEAR(gain, after - before - GR::Edge_flips::min_angle_margin, 1e-12) << input.name;
       }
     }
     EXPECT_GT(worse, 0u) << input.name;
@@ -714,7 +722,7 @@ TEST(Connectivity_pass, CollapsesStayAwayFromFeaturesAndCurvedParts)
         on_feature[std::size_t(v)] = s.mesh.degree(v);
   const std::size_t n = s.mesh.number_of_vertices();
   const Work before = s.mesh;
-  const std::size_t collapses = s.optimizer().collapse_edges();
+  const std::size_t collapses = GR::Edge_collapses(s.operations()).run();
   EXPECT_GT(collapses, 0u);
   expect_pass_guarantees(s, before, "box collapses");
   EXPECT_EQ(s.mesh.number_of_vertices(), n - collapses);
@@ -732,7 +740,7 @@ TEST(Connectivity_pass, CollapsesStayAwayFromFeaturesAndCurvedParts)
 
   // A sphere is curved everywhere: no dihedral angle below 10 degrees at this resolution.
   Pass_setup sphere(to_work_mesh(make_sphere(2)), 2.0);
-  EXPECT_EQ(sphere.optimizer().collapse_edges(), 0u);
+  EXPECT_EQ(GR::Edge_collapses(sphere.operations()).run(), 0u);
 }
 
 // A vertex of valence 10 in the middle of a disc: its ring of 10 vertices of valence 5, then a
@@ -771,7 +779,7 @@ TEST(Connectivity_pass, VertexSplitLowersTheValenceDeviation)
     const Work before = s.mesh;
     const int deviation = valence_deviation(s.mesh);
     const std::string name = "disc at scale " + std::to_string(scale);
-    EXPECT_EQ(s.optimizer().split_vertices(), 1u) << name;
+    EXPECT_EQ(GR::Vertex_splits(s.operations()).run(), 1u) << name;
     expect_pass_guarantees(s, before, name);
     EXPECT_EQ(s.mesh.number_of_vertices(), 2 * n + 2) << name;
     EXPECT_EQ(s.mesh.number_of_faces(), 3 * n + 2) << name;
@@ -799,7 +807,7 @@ TEST(Connectivity_pass, HighValenceIsSplitIntoNearHalves)
     Pass_setup s(fan_disc(n, 1.0, 0.4));
     const Work before = s.mesh;
     const std::string name = "fan of " + std::to_string(n);
-    EXPECT_EQ(s.optimizer().split_vertices(), 1u) << name;
+    EXPECT_EQ(GR::Vertex_splits(s.operations()).run(), 1u) << name;
     expect_pass_guarantees(s, before, name);
     // The two new vertices, inside the inner ring, share its n edges and the two triangles
     // between them.
@@ -840,7 +848,7 @@ TEST(Connectivity_pass, LongEdgesBetweenObtuseTrianglesAreSplit)
     }
   }
   Pass_setup s(to_work_mesh(mesh_from_soup(points, triangles)));
-  s.sizing.mean_length = 1.0;
+  s.sizing.longest = 1.0;
   auto mean_quality = [&s] {
     double q = 0;
     for(auto f : s.mesh.faces())
@@ -852,7 +860,7 @@ TEST(Connectivity_pass, LongEdgesBetweenObtuseTrianglesAreSplit)
   };
   const Work before = s.mesh;
   const double q0 = mean_quality();
-  const std::size_t splits = s.optimizer().split_edges();
+  const std::size_t splits = GR::Edge_splits(s.operations()).run();
   EXPECT_GE(splits, n);
   expect_pass_guarantees(s, before, "diamonds");
   EXPECT_EQ(s.mesh.number_of_vertices(), before.number_of_vertices() + splits);
@@ -906,7 +914,7 @@ TEST(Connectivity_pass, RelaxationImprovesWithoutFolding)
     Pass_setup s(m);
     const Work before = s.mesh;
     const double angle_before = PMP::mesh_quality_report(s.mesh).min_angle;
-    EXPECT_GT(s.optimizer().relax(), 0u);
+    EXPECT_GT(GR::Relaxation(s.operations(), {}).run(), 0u);
     expect_pass_guarantees(s, before, "pushed " + std::to_string(push));
     EXPECT_GT(PMP::mesh_quality_report(s.mesh).min_angle, angle_before);
   }
@@ -927,11 +935,11 @@ TEST(Connectivity_pass, LongSharpEdgesAreSplitOnTheirPolyline)
     {
       // Without the polylines, sharp edges are left whole.
       Pass_setup plain(to_work_mesh(box));
-      plain.optimizer().split_edges();
+      GR::Edge_splits(plain.operations()).run();
       EXPECT_EQ(plain.feature_edges().size(), sharp_before) << name;
     }
     const Work before = s.mesh;
-    const std::size_t splits = s.optimizer_with_features().split_edges();
+    const std::size_t splits = GR::Edge_splits(s.operations_with_features()).run();
     EXPECT_GT(splits, 0u) << name;
     expect_pass_guarantees(s, before, name);
     const std::size_t sharp_after = s.feature_edges().size();
@@ -970,9 +978,9 @@ TEST(Connectivity_pass, RelaxationKeepsOnlyMovesThatDoNotRaiseTheLocalEnergy)
     // Every move raises the distance to the starting positions: nothing moves.
     Pass_setup s(m);
     const Work start = s.mesh;
-    const std::size_t moved = s.optimizer_with_features([&start](Work::Vertex_index u, const GR::Vector_3d& x, double) {
+    const std::size_t moved = GR::Relaxation(s.operations_with_features(), [&start](Work::Vertex_index u, const GR::Vector_3d& x, double) {
       return (x - GR::to_vector(start.point(u))).squaredNorm();
-    }).relax();
+    }).run();
     EXPECT_EQ(moved, 0u);
     for(auto u : s.mesh.vertices())
       EXPECT_EQ(s.mesh.point(u), start.point(u));
@@ -981,9 +989,9 @@ TEST(Connectivity_pass, RelaxationKeepsOnlyMovesThatDoNotRaiseTheLocalEnergy)
     // An energy that only the pushed vertex's way back lowers: only it moves.
     Pass_setup s(m);
     const GR::Vector_3d home = GR::to_vector(to_work_mesh(make_equilateral_patch(9, 1.0)).point(v));
-    const std::size_t moved = s.optimizer_with_features([&](Work::Vertex_index u, const GR::Vector_3d& x, double) {
+    const std::size_t moved = GR::Relaxation(s.operations_with_features(), [&](Work::Vertex_index u, const GR::Vector_3d& x, double) {
       return u == v ? (x - home).squaredNorm() : (x - s.point(u)).squaredNorm();
-    }).relax();
+    }).run();
     EXPECT_EQ(moved, 1u);
     EXPECT_LT((s.point(v) - home).norm(), (p - home).norm());
   }
@@ -1005,9 +1013,9 @@ TEST(Connectivity_pass, ResamplingRelaxationKeepsTheTrianglesWithinTheTolerance)
     s.sizing = GR::curvature_sizing(s.reference_mesh, s.reference_feature_edge, GR::mean_edge_length(s.reference_mesh), 35,
                                     GR::longest_to_mean_length);
     const Work start = s.mesh;
-    const std::size_t moved = s.optimizer_with_features([&start](Work::Vertex_index u, const GR::Vector_3d& x, double) {
+    const std::size_t moved = GR::Relaxation(s.operations_with_features(), [&start](Work::Vertex_index u, const GR::Vector_3d& x, double) {
       return (x - GR::to_vector(start.point(u))).squaredNorm();
-    }).relax();
+    }).run();
     ASSERT_EQ(s.input_feature_edges.size(), input == &folded ? 44u + 11u : 0u); // the border's and the fold's
     EXPECT_GT(moved, s.mesh.number_of_vertices() / 5);
     for(auto f : s.mesh.faces())

@@ -12,7 +12,7 @@
 
 #include "tool_support.h"
 
-#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/remesher.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/remeshing_options.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>

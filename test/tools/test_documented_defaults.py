@@ -34,8 +34,13 @@ def struct_defaults(path, name):
     return found
 
 
-code = struct_defaults(internal + 'remesher.h', 'Remeshing_options')
+code = struct_defaults(internal + 'remeshing_options.h', 'Remeshing_options')
 code.update(struct_defaults(internal + 'energy.h', 'Energy_weights'))
+# CGAL's operation switches, by their named parameters.
+operations = struct_defaults(internal + 'remeshing_options.h', 'Connectivity_operations')
+for field, parameter in (('split', 'do_split'), ('collapse', 'do_collapse'), ('flip', 'do_flip'),
+                         ('relaxation_steps', 'number_of_relaxation_steps')):
+    code[parameter] = operations[field]
 # The sharp-angle bounds are documented with both modes' defaults, re-sampling's first.
 code['sharp_angle_bounds'] = code['sharp_angle_bounds'] + code.pop('paper_sharp_angle_bounds')
 check(len(code) >= 12, 'found %d defaults in Remeshing_options and Energy_weights' % len(code))

@@ -107,10 +107,10 @@ Remeshing_options remeshing_options(const NamedParameters& np, bool resample = f
   options.resampling = options.resampling || resample;
   options.sharp_angle_bounds = options.default_sharp_angle_bounds(options.resampling, resample);
   read(options.sharp_angle_bounds, GNP::sharp_angle_bounds);
-  read(options.do_split, internal_np::do_split);
-  read(options.do_collapse, internal_np::do_collapse);
-  read(options.do_flip, internal_np::do_flip);
-  read(options.number_of_relaxation_steps, internal_np::number_of_relaxation_steps);
+  read(options.operations.split, internal_np::do_split);
+  read(options.operations.collapse, internal_np::do_collapse);
+  read(options.operations.flip, internal_np::do_flip);
+  read(options.operations.relaxation_steps, internal_np::number_of_relaxation_steps);
   read(options.relax_constraints, internal_np::relax_constraints);
   return options;
 }
@@ -206,11 +206,12 @@ remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMes
   // every turn of its own.
   const double crease_turn_angle = options.resampling ? options.sharp_angle_bounds.second : strong_crease_turn_angle;
   // Coarsening: the lines of the input's sampling that are short at the target's scale go.
+  const double input_mean_length = mean_edge_length(work);
   const double shortest_sharp_line =
-    options.target_edge_length > mean_edge_length(work) ? short_sharp_line_to_target * options.target_edge_length : 0;
+    options.target_edge_length > input_mean_length ? short_sharp_line_to_target * options.target_edge_length : 0;
   auto features = copy.features(work, ecm, face_patch, options.sharp_angle_bounds, crease_turn_angle,
                                 options.resampling, options.relax_constraints, shortest_sharp_line);
-  Graphcut_remesher remesher(work, std::move(features.first), std::move(features.second), options);
+  Graphcut_remesher remesher(work, input_mean_length, std::move(features.first), std::move(features.second), options);
   Graphcut_remeshing_statistics stats = remesher.run(listeners);
 #ifndef CGAL_NO_POSTCONDITIONS
   {

@@ -18,11 +18,10 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_pair_tests.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
 #include <CGAL/Bbox_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/intersections.h>
 
 #include <boost/container/small_vector.hpp>
 
@@ -44,13 +43,55 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Graphcut_remeshing {
 
+using Small_box = std::array<float, 6>; // low x, y, z, high x, y, z
+
+// The box of the triangle t's vertices at place(v), grown by `margin`, in single precision rounded
+// outwards.
+template <typename Place>
+Small_box small_box(const std::array<Work_mesh::Vertex_index, 3>& t, const Place& place, double margin)
+{
+  std::array<double, 3> low, high;
+  low.fill(std::numeric_limits<double>::infinity());
+  high.fill(-std::numeric_limits<double>::infinity());
+  for(Work_mesh::Vertex_index v : t)
+  {
+    const std::array<double, 3> p = place(v);
+    for(int a = 0; a < 3; ++a)
+    {
+      low[a] = (std::min)(low[a], p[a]);
+      high[a] = (std::max)(high[a], p[a]);
+    }
+  }
+  const float inf = std::numeric_limits<float>::infinity();
+  Small_box b;
+  for(int a = 0; a < 3; ++a)
+  {
+    b[a] = std::nextafter(float(low[a] - margin), -inf);
+    b[a + 3] = std::nextafter(float(high[a] + margin), inf);
+  }
+  return b;
+}
+
+inline bool overlap(const Small_box& a, const Small_box& b)
+{
+  return !(b[0] > a[3] || a[0] > b[3] || b[1] > a[4] || a[1] > b[4] || b[2] > a[5] || a[2] > b[5]);
+}
+
+template <typename Pair>
+void sort_pairs(std::vector<Pair>& pairs)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_sort(pairs.begin(), pairs.end());
+#else
+  std::sort(pairs.begin(), pairs.end());
+#endif
+}
+
 class Triangle_intersections
 {
   using Vertex = Work_mesh::Vertex_index;
   using Halfedge = Work_mesh::Halfedge_index;
   using Face = Work_mesh::Face_index;
-  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Point = Epick::Point_3;
 
 public:
   using Face_pair = std::pair<Face, Face>; // first < second
@@ -124,7 +165,6 @@ public:
 
 private:
   using Cell = std::array<long long, 3>;
-  using Small_box = std::array<float, 6>; // low x, y, z, high x, y, z
 
   // A triangle listed in a grid cell, with the axes on which the cell is its box's first, in
   // 32 bits: a large mesh has tens of millions of entries.
@@ -137,12 +177,6 @@ private:
     Face face() const { return Face(static_cast<Face::size_type>(bits >> 3)); }
     unsigned char low() const { return static_cast<unsigned char>(bits & 7); }
   };
-
-  Point point(Vertex v) const
-  {
-    const auto& p = m_mesh.point(v);
-    return Point(p.x(), p.y(), p.z());
-  }
 
   CGAL::Bbox_3 box(Face f) const
   {
@@ -158,24 +192,6 @@ private:
     const std::array<double, 3>& a = m_anchor[std::size_t(v)];
     return !(std::abs(p.x() - a[0]) <= m_margin && std::abs(p.y() - a[1]) <= m_margin &&
              std::abs(p.z() - a[2]) <= m_margin);
-  }
-
-  // function(i, list) for i in [0, n), by blocks in parallel, each block into its own list; then
-  // the lists appended to `out` in the order of the blocks.
-  template <typename Function>
-  static void collect_by_blocks(std::size_t n, std::vector<Face_pair>& out, const Function& function)
-  {
-    const std::size_t block = 1024, number_of_blocks = (n + block - 1) / block;
-    std::vector<std::vector<Face_pair> > found(number_of_blocks);
-    for_each_index(
-      number_of_blocks,
-      [&](std::size_t bi) {
-        for(std::size_t i = bi * block; i < (std::min)(n, (bi + 1) * block); ++i)
-          function(i, found[bi]);
-      },
-      1);
-    for(const std::vector<Face_pair>& pairs : found)
-      out.insert(out.end(), pairs.begin(), pairs.end());
   }
 
   // The candidate list: the pairs of triangles without a common vertex whose boxes, grown by the
@@ -471,47 +487,16 @@ private:
   // vertex drifts farther than the margin.
   Small_box grown_box(Face f) const
   {
-    return small_box(f, [&](Vertex v) { return m_anchor[std::size_t(v)]; }, m_margin);
+    return small_box(m_triangles[std::size_t(f)], [&](Vertex v) { return m_anchor[std::size_t(v)]; }, m_margin);
   }
 
   // The box of f's vertices where they are.
   Small_box current_box(Face f) const
   {
-    return small_box(f, [&](Vertex v) {
+    return small_box(m_triangles[std::size_t(f)], [&](Vertex v) {
       const auto& p = m_mesh.point(v);
       return std::array<double, 3>{{p.x(), p.y(), p.z()}};
     }, 0.);
-  }
-
-  // The box of f's vertices at place(v), grown by `margin`, in single precision rounded outwards.
-  template <typename Place>
-  Small_box small_box(Face f, const Place& place, double margin) const
-  {
-    std::array<double, 3> low, high;
-    low.fill(std::numeric_limits<double>::infinity());
-    high.fill(-std::numeric_limits<double>::infinity());
-    for(Vertex v : m_triangles[std::size_t(f)])
-    {
-      const std::array<double, 3> p = place(v);
-      for(int a = 0; a < 3; ++a)
-      {
-        low[a] = (std::min)(low[a], p[a]);
-        high[a] = (std::max)(high[a], p[a]);
-      }
-    }
-    const float inf = std::numeric_limits<float>::infinity();
-    Small_box b;
-    for(int a = 0; a < 3; ++a)
-    {
-      b[a] = std::nextafter(float(low[a] - margin), -inf);
-      b[a + 3] = std::nextafter(float(high[a] + margin), inf);
-    }
-    return b;
-  }
-
-  static bool overlap(const Small_box& a, const Small_box& b)
-  {
-    return !(b[0] > a[3] || a[0] > b[3] || b[1] > a[4] || a[1] > b[4] || b[2] > a[5] || a[2] > b[5]);
   }
 
   bool share_vertex(Face f, Face g) const
@@ -527,15 +512,6 @@ private:
   static std::array<Vertex, 3> no_triangle()
   {
     return {{Work_mesh::null_vertex(), Work_mesh::null_vertex(), Work_mesh::null_vertex()}};
-  }
-
-  static void sort_pairs(std::vector<Face_pair>& pairs)
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    tbb::parallel_sort(pairs.begin(), pairs.end());
-#else
-    std::sort(pairs.begin(), pairs.end());
-#endif
   }
 
   Cell cell_of(double x, double y, double z) const
@@ -563,14 +539,11 @@ private:
     return std::size_t(h * 0x9E3779B97F4A7C15ull >> 20) & (m_buckets - 1);
   }
 
-  // The triangles around v, each with its other two vertices in the order of the face.
-  using Fan = boost::container::small_vector<std::pair<Face, std::array<Vertex, 2> >, 16>;
-
   // The intersecting pairs among the triangles around v with a queried one. When the fan is
   // embedded there are none; otherwise each such pair is tested.
   void fan_pairs(Vertex v, const std::vector<char>& query, std::vector<Face_pair>& found) const
   {
-    Fan fan;
+    Vertex_fan fan;
     bool queried = false;
     for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
       if(!m_mesh.is_border(h))
@@ -579,7 +552,7 @@ private:
         fan.push_back({m_mesh.face(h), {{m_mesh.target(m_mesh.next(h)), m_mesh.source(h)}}});
         queried = queried || query[std::size_t(m_mesh.face(h))];
       }
-    if(!queried || fan.size() < 2 || is_embedded_fan(v, fan))
+    if(!queried || fan.size() < 2 || is_embedded_fan(m_mesh, v, fan))
       return;
     for(std::size_t i = 0; i < fan.size(); ++i)
       for(std::size_t j = i + 1; j < fan.size(); ++j)
@@ -590,128 +563,10 @@ private:
       }
   }
 
-  // Whether the triangles of `fan` meet only in the edges and at the vertex v they share. Seen
-  // along the coordinate axis nearest their mean normal (the projection then only drops a
-  // coordinate, and exact predicates stay exact), the triangles must be positively oriented
-  // sectors at v going at most once around it: the ray to a first rim vertex (an end of an open
-  // fan) lies in no sector but the ones it bounds. Then two sectors share only v or a bounding
-  // ray, each triangle projects one to one, and two triangles share only v or their common edge.
-  bool is_embedded_fan(Vertex v, const Fan& fan) const
-  {
-    const Vector_3d p = to_vector(m_mesh.point(v));
-    Vector_3d n = Vector_3d::Zero();
-    for(const auto& t : fan)
-      n += area_vector(p, to_vector(m_mesh.point(t.second[0])), to_vector(m_mesh.point(t.second[1])));
-    const int axis = std::abs(n[0]) >= std::abs(n[1]) ? (std::abs(n[0]) >= std::abs(n[2]) ? 0 : 2)
-                                                       : (std::abs(n[1]) >= std::abs(n[2]) ? 1 : 2);
-    const CGAL::Orientation positive = n[axis] > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
-    const CGAL::Orientation negative = n[axis] > 0 ? CGAL::NEGATIVE : CGAL::POSITIVE;
-    using Point_2 = std::array<double, 2>;
-    auto project = [&](Vertex u) {
-      const auto& q = m_mesh.point(u);
-      return axis == 0 ? Point_2{{q.y(), q.z()}} : (axis == 1 ? Point_2{{q.z(), q.x()}} : Point_2{{q.x(), q.y()}});
-    };
-    const Point_2 o = project(v);
-    boost::container::small_vector<std::array<Point_2, 2>, 16> rim;
-    // All orientations are of (o, a, b) with a and b on the rim: one error bound of CGAL's static
-    // filter for orientation_2, from the largest coordinate differences to o, serves them all.
-    double max_x = 0, max_y = 0;
-    for(const auto& t : fan)
-    {
-      rim.push_back({{project(t.second[0]), project(t.second[1])}});
-      for(const Point_2& q : rim.back())
-      {
-        max_x = (std::max)(max_x, std::abs(q[0] - o[0]));
-        max_y = (std::max)(max_y, std::abs(q[1] - o[1]));
-      }
-    }
-    const bool filtered = max_x > 1e-146 && max_y > 1e-146 && max_x < 1e153 && max_y < 1e153;
-    const double bound = 8.8872057372592798e-16 * max_x * max_y;
-    auto orientation = [&](const Point_2& a, const Point_2& b) {
-      if(filtered)
-      {
-        const double det = (a[0] - o[0]) * (b[1] - o[1]) - (b[0] - o[0]) * (a[1] - o[1]);
-        if(det > bound)
-          return CGAL::POSITIVE;
-        if(det < -bound)
-          return CGAL::NEGATIVE;
-      }
-      return CGAL::orientation(Epick::Point_2(o[0], o[1]), Epick::Point_2(a[0], a[1]), Epick::Point_2(b[0], b[1]));
-    };
-    for(const auto& r : rim)
-      if(orientation(r[0], r[1]) != positive)
-        return false;
-    auto sectors_at = [&](Vertex u) {
-      std::size_t k = 0;
-      for(const auto& t : fan)
-        k += (t.second[0] == u) + (t.second[1] == u);
-      return k;
-    };
-    std::size_t start = 0; // the rim vertex rim[start][0]
-    for(std::size_t k = 0; k < fan.size(); ++k)
-      if(sectors_at(fan[k].second[0]) == 1)
-      {
-        start = k;
-        break;
-      }
-    const Vertex start_vertex = fan[start].second[0];
-    if(sectors_at(start_vertex) > 2)
-      return false;
-    const Point_2 s = rim[start][0];
-    for(std::size_t k = 0; k < fan.size(); ++k)
-      if(fan[k].second[0] != start_vertex && fan[k].second[1] != start_vertex &&
-         orientation(rim[k][0], s) != negative && orientation(s, rim[k][1]) != negative)
-        return false;
-    return true;
-  }
-
-  // Whether triangles f and g share a point they do not share through the mesh: for neighbours,
-  // a point other than their common vertex or edge.
+  // Whether triangles f and g share a point they do not share through the mesh.
   bool intersect(Face f, Face g) const
   {
-    const std::array<Vertex, 3>& a = m_triangles[std::size_t(f)];
-    const std::array<Vertex, 3>& b = m_triangles[std::size_t(g)];
-    // Put the shared vertices first, in the same order in both.
-    std::array<Vertex, 3> fa = a, fb = b;
-    int shared = 0;
-    for(int i = 0; i < 3; ++i)
-      for(int j = shared; j < 3; ++j)
-        if(fa[i] == fb[j])
-        {
-          std::swap(fa[i], fa[shared]);
-          std::swap(fb[j], fb[shared]);
-          ++shared;
-          break;
-        }
-    Epick k;
-    if(shared == 3)
-      return true; // two triangles on the same three vertices
-    if(shared == 2)
-    {
-      // Across their common edge (p, q) they meet elsewhere only when folded onto each other.
-      const Point p = point(fa[0]), q = point(fa[1]), r = point(fa[2]), s = point(fb[2]);
-      return k.coplanar_3_object()(p, q, r, s) &&
-             k.coplanar_orientation_3_object()(p, q, r, s) == CGAL::POSITIVE;
-    }
-    if(shared == 1)
-    {
-      // Their intersection is convex and holds the common vertex: it holds another point exactly
-      // when the edge of one opposite that vertex meets the other.
-      const Point v = point(fa[0]), a1 = point(fa[1]), a2 = point(fa[2]);
-      const Point b1 = point(fb[1]), b2 = point(fb[2]);
-      auto orientation = k.orientation_3_object();
-      // Strictly on one side of the other's plane: nothing but the common vertex.
-      const CGAL::Orientation o1 = orientation(v, a1, a2, b1), o2 = orientation(v, a1, a2, b2);
-      if(o1 != CGAL::COPLANAR && o1 == o2)
-        return false;
-      const CGAL::Orientation o3 = orientation(v, b1, b2, a1), o4 = orientation(v, b1, b2, a2);
-      if(o3 != CGAL::COPLANAR && o3 == o4)
-        return false;
-      return CGAL::do_intersect(Epick::Segment_3(a1, a2), Epick::Triangle_3(v, b1, b2)) ||
-             CGAL::do_intersect(Epick::Segment_3(b1, b2), Epick::Triangle_3(v, a1, a2));
-    }
-    return CGAL::do_intersect(Epick::Triangle_3(point(a[0]), point(a[1]), point(a[2])),
-                              Epick::Triangle_3(point(b[0]), point(b[1]), point(b[2])));
+    return triangles_intersect(m_mesh, m_triangles[std::size_t(f)], m_triangles[std::size_t(g)]);
   }
 
   const Work_mesh& m_mesh;

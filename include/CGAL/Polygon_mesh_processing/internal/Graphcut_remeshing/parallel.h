@@ -15,9 +15,11 @@
 #include <tbb/parallel_for.h>
 #endif
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -42,6 +44,24 @@ void for_each_index(std::size_t n, const Function& function, std::size_t grain =
 #endif
   for(std::size_t i = 0; i < n; ++i)
     function(i);
+}
+
+// function(i, list) for i in [0, n), by blocks in parallel, each block into its own list; then
+// the lists appended to `out` in the order of the blocks: the same `out` whatever the threads.
+template <typename T, typename Function>
+void collect_by_blocks(std::size_t n, std::vector<T>& out, const Function& function)
+{
+  const std::size_t block = 1024, number_of_blocks = (n + block - 1) / block;
+  std::vector<std::vector<T> > found(number_of_blocks);
+  for_each_index(
+    number_of_blocks,
+    [&](std::size_t bi) {
+      for(std::size_t i = bi * block; i < (std::min)(n, (bi + 1) * block); ++i)
+        function(i, found[bi]);
+    },
+    1);
+  for(const std::vector<T>& items : found)
+    out.insert(out.end(), items.begin(), items.end());
 }
 
 // A seed for the random numbers of one item in one round, from the user's seed: the same

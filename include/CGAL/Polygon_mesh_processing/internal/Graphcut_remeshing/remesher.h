@@ -12,12 +12,13 @@
 //       if the choice makes triangles intersect, keep their vertices and decide again
 //       in the first phase, every connectivity_period iterations:
 //         flips, splits, collapses, vertices where the reference is far,
-//         vertex splits, relaxation                                      (connectivity.h)
+//         vertex splits, relaxation            (connectivity.h, one file per operation)
 //   with a length coarser than the input's, twice: vertices where the reference stands out
-//   from the mesh, and where the mesh's edges stand out from the reference  (connectivity.h)
+//   from the mesh, and where the mesh's edges stand out from the reference    (coverings.h)
 //
 // The energy of eq. (1) is in energy.h, the reference surface and its frames in
-// reference_surface.h, the feature lines in features.h, the target edge length in sizing.h.
+// reference_surface.h, the feature lines in features.h, the target edge length in sizing.h, the
+// parameters and their defaults in remeshing_options.h.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_REMESHER_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_REMESHER_H
@@ -32,6 +33,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/relocation_cut.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/remeshing_options.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/sizing.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/tracking.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
@@ -55,61 +57,6 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Graphcut_remeshing {
 
-// The parameters of the method, with their defaults: the one place they are written. The named
-// parameters of graphcut_isotropic_remeshing() fall back to these, and the tools print them.
-struct Remeshing_options
-{
-  Energy_weights weights;
-  std::size_t number_of_iterations = 150;
-  std::size_t number_of_greedy_iterations = 20;
-  double initial_temperature = 10;
-  double cooling_factor = 0.95;
-  double smoothing_step = 0.06; // gamma of section 2.3
-  unsigned int random_seed = 0;
-  bool do_connectivity_optimization = true;
-  std::size_t connectivity_period = 5;
-  // theta_false and theta_true of eq. (8), in degrees, when the surface is re-sampled at the
-  // input's density (they measure best there); `paper_sharp_angle_bounds`, the paper's own, with
-  // its connectivity and at a density asked for (default_sharp_angle_bounds()).
-  // Beyond the paper: reference triangles within theta_false count as one smooth sheet for
-  // tracking, and a border that turns by more than theta_true is a corner.
-  std::pair<double, double> sharp_angle_bounds{20, 50};
-  std::pair<double, double> paper_sharp_angle_bounds{20, 35};
-  // The largest distance (unit box) a chord of the target edge length may keep from a curved
-  // reference; it shortens the target length where the surface is curved (section 3.1's e_min,
-  // e_max depend on the local curvature).
-  double sizing_tolerance = 3e-3;
-  // Beyond the paper: the connectivity stage re-samples the surface to a curvature-adapted sizing
-  // field (sizing.h's curvature_sizing()), collapsing and splitting also where it is curved and
-  // along feature lines and borders. Without it, the paper's connectivity stage.
-  bool resampling = true;
-  // The edge length the re-sampling aims at (unit box), or 0 for the input's mean edge length.
-  double target_edge_length = 0;
-  // The user gave the sizing tolerance (graphcut_parameters::sizing_tolerance): re-sampling then
-  // aims at the lengths whose triangles keep within it, between `edge_length_bounds` (unit box; 0 for
-  // a quarter of the target length, and the target length), instead of a field that asks for as
-  // many triangles as the target length would (sizing.h).
-  bool error_bounded_sizing = false;
-  std::pair<double, double> edge_length_bounds{0, 0};
-  // CGAL's switches of isotropic_remeshing(): which operations the connectivity passes make, how
-  // many relaxation sweeps end a pass, and whether the vertices of the user's constrained edges
-  // slide along them (else they stay).
-  bool do_split = true;
-  bool do_collapse = true;
-  bool do_flip = true;
-  std::size_t number_of_relaxation_steps = 1;
-  bool relax_constraints = true;
-  static constexpr double shortest_to_target = 0.25;
-
-  // The sharp-angle bounds when the user gives none: `sharp_angle_bounds` when re-sampling at the
-  // input's density, the paper's without re-sampling and at a density asked for (where they keep
-  // the coarse triangles nearer the input).
-  std::pair<double, double> default_sharp_angle_bounds(bool with_resampling, bool density_asked_for) const
-  {
-    return with_resampling && !density_asked_for ? sharp_angle_bounds : paper_sharp_angle_bounds;
-  }
-};
-
 class Graphcut_remesher
 {
   using Vertex = Work_mesh::Vertex_index;
@@ -119,18 +66,19 @@ class Graphcut_remesher
   using Location = Feature_polylines<Work_mesh>::Location;
 
 public:
-  // `mesh` is the working mesh, already in the unit box; `feature_edge` (by edge index) holds
-  // the sharp, border and user-constrained edges, `kind` (by vertex index) what each vertex may do.
-  Graphcut_remesher(Work_mesh& mesh, std::vector<char> feature_edge, std::vector<Vertex_kind> kind,
-                    const Remeshing_options& options)
+  // `mesh` is the working mesh, already in the unit box, whose mean edge length is
+  // `input_mean_length`; `feature_edge` (by edge index) holds the sharp, border and
+  // user-constrained edges, `kind` (by vertex index) what each vertex may do.
+  Graphcut_remesher(Work_mesh& mesh, double input_mean_length, std::vector<char> feature_edge,
+                    std::vector<Vertex_kind> kind, const Remeshing_options& options)
     : m_mesh(mesh), m_reference_mesh(mesh), m_reference(m_reference_mesh, options.sharp_angle_bounds.first),
       m_reference_feature_edge(std::move(feature_edge)), m_reference_kind(std::move(kind)),
       m_polylines(m_reference_mesh, m_reference_feature_edge, m_reference_kind), m_options(options),
-      m_sizing(make_sizing(m_reference_mesh, m_reference_feature_edge, options)),
-      m_input_mean_length(mean_edge_length(m_reference_mesh)),
+      m_input_mean_length(input_mean_length),
+      m_sizing(make_sizing_field(m_reference_mesh, m_reference_feature_edge, options, input_mean_length)),
       m_tracking(m_mesh, m_reference, m_polylines, m_state),
       m_energy(m_mesh, m_reference, m_state,
-               options.resampling ? resampling_weights(options.weights, m_sizing.tolerance) : options.weights),
+               m_sizing.resamples() ? resampling_weights(options.weights, m_sizing.tolerance) : options.weights),
       m_candidates(m_mesh, m_reference, m_polylines, m_state, m_energy, options.smoothing_step),
       m_cut(m_mesh, m_energy), m_intersections(mesh)
   {
@@ -142,10 +90,10 @@ public:
     // new_self_intersections()). Freezing those triangles instead kept the input's slivers around
     // them (cow's tail, ALSTOM_TEST4's strips).
     for(const auto& p : m_intersections.all_pairs())
-      m_input_intersection_zones.push_back(grown_box(p.first, p.second, m_input_mean_length));
+      m_input_intersection_zones.push_back(box_around(m_mesh, p.first, p.second, m_input_mean_length));
     // With re-sampling the strong creases' turns are not corners: their lines keep near them as
     // the surface does.
-    if(m_options.resampling)
+    if(m_sizing.resamples())
       m_polylines.set_line_tolerance(m_sizing.tolerance);
     m_energy.compute_terms();
   }
@@ -191,14 +139,14 @@ public:
         }
       }
     }
-    // Beyond the paper: with a length coarser than the input's (Sizing::covers_reference), what
+    // Beyond the paper: with a length coarser than the input's (Sizing_field::covers_reference), what
     // still stands out once the relocation is over gets vertices, which then stay where they are
     // put, on the reference (the energies above are those of the iterations).
     if(m_options.do_connectivity_optimization && m_sizing.covers_reference)
       for(std::size_t k = 0; k < final_coverings; ++k)
       {
         m_cut.release();
-        connectivity_pass(stats, true);
+        covering_pass(stats);
         m_energy.compute_terms();
         m_tracking.mark_all();
       }
@@ -312,12 +260,27 @@ public:
     return new_self_intersections().empty() ? std::string() : std::string("two triangles intersect away from the input's intersections");
   }
 
-  // Section 3 once: local changes then relaxation. Should they make the mesh self-intersect, the
-  // pass is undone and tried again with the region around the new intersections left alone (a
-  // wider one after a second failure), in this pass and the next (keep_out_lifetime); later
-  // passes try there again, the relocation having moved the triangles since (kept for the whole
-  // run, those regions froze most of ALSTOM_TEST4 at twice its mean edge length).
-  void connectivity_pass(Graphcut_remeshing_statistics& stats, bool covering_only = false)
+  // Section 3 once: local changes then relaxation.
+  void connectivity_pass(Graphcut_remeshing_statistics& stats)
+  {
+    safe_pass(stats, [](Connectivity_optimizer& optimizer) { return optimizer.connectivity_pass(); });
+  }
+
+  // The coverings alone (Connectivity_optimizer::cover_what_stands_out()).
+  void covering_pass(Graphcut_remeshing_statistics& stats)
+  {
+    safe_pass(stats, [](Connectivity_optimizer& optimizer) { return optimizer.cover_what_stands_out(); });
+  }
+
+private:
+  // Runs `pass` on an optimizer of the working mesh. Should the pass make the mesh self-intersect,
+  // it is undone and tried again with the region around the new intersections left alone (a wider
+  // one after a second failure: twice the input's mean edge length, not the target's, which a
+  // coarse target makes large enough to freeze a coarsening), in this pass and the next
+  // (keep_out_lifetime); later passes try there again, the relocation having moved the triangles
+  // since (regions kept for the whole run froze most of ALSTOM_TEST4 at a coarse target).
+  template <typename Pass>
+  void safe_pass(Graphcut_remeshing_statistics& stats, const Pass& pass)
   {
     ++m_passes;
     m_keep_out.erase(std::remove_if(m_keep_out.begin(), m_keep_out.end(),
@@ -337,9 +300,8 @@ public:
                                        [this](Vertex v, const Vector_3d& x, double bound) {
                                          return m_energy.local_evidence(v, x, bound);
                                        },
-                                       Connectivity_operations{m_options.do_split, m_options.do_collapse,
-                                                               m_options.do_flip, m_options.number_of_relaxation_steps});
-      const Connectivity_counts counts = covering_only ? optimizer.cover_what_stands_out() : optimizer.run();
+                                       m_options.operations);
+      const Connectivity_counts counts = pass(optimizer);
       m_energy.collect_feature_edges();
       // The mesh had no new intersections before the pass: only triangles it changed or moved
       // can have made some.
@@ -373,51 +335,18 @@ public:
             for(Vertex u : face_vertices(m_mesh, f))
             {
               const double r = 0.5 * m_input_mean_length;
-              m_keep_out.push_back(Keep_out{grown(m_mesh.point(u).bbox(), r), m_passes});
+              m_keep_out.push_back(Keep_out{grown_by(m_mesh.point(u).bbox(), r), m_passes});
               if(std::size_t(u) < mesh_before.num_vertices() && !mesh_before.is_removed(u))
-                m_keep_out.push_back(Keep_out{grown(mesh_before.point(u).bbox(), r), m_passes});
+                m_keep_out.push_back(Keep_out{grown_by(mesh_before.point(u).bbox(), r), m_passes});
             }
           else
-            m_keep_out.push_back(Keep_out{grown_box(f, f, 2 * m_input_mean_length), m_passes});
+            m_keep_out.push_back(Keep_out{box_around(m_mesh, f, f, 2 * m_input_mean_length), m_passes});
       m_mesh = mesh_before;
       m_state = state_before;
       m_intersections.invalidate();
       m_energy.collect_feature_edges(); // the undone pass may have split feature edges
       ++stats.number_of_undone_passes;
     }
-  }
-
-
-private:
-  // The target edge lengths of the connectivity stage: a curvature-adapted field around the
-  // target (or mean) length when it re-samples, else that length with the user's tolerance for
-  // the curved parts.
-  static Sizing make_sizing(const Work_mesh& reference, const std::vector<char>& feature_edge,
-                            const Remeshing_options& options)
-  {
-    const double length = options.target_edge_length > 0 ? options.target_edge_length : mean_edge_length(reference);
-    if(options.resampling && options.error_bounded_sizing)
-    {
-      const double longest = options.edge_length_bounds.second > 0 ? options.edge_length_bounds.second : length;
-      const double shortest =
-        options.edge_length_bounds.first > 0 ? options.edge_length_bounds.first : Remeshing_options::shortest_to_target * longest;
-      Sizing sizing = tolerance_sizing(reference, feature_edge, options.sizing_tolerance, shortest, longest,
-                                       options.sharp_angle_bounds.second);
-      sizing.into_lines = options.target_edge_length > 0;
-      return sizing;
-    }
-    if(options.resampling)
-    {
-      const double longest = options.target_edge_length > 0 ? longest_to_asked_target : longest_to_mean_length;
-      Sizing sizing = curvature_sizing(reference, feature_edge, length, options.sharp_angle_bounds.second, longest);
-      sizing.target_asked_for = sizing.into_lines = options.target_edge_length > 0;
-      sizing.covers_reference = sizing.target_asked_for && length >= covering_length_ratio * mean_edge_length(reference);
-      return sizing;
-    }
-    Sizing sizing;
-    sizing.mean_length = length;
-    sizing.tolerance = options.sizing_tolerance;
-    return sizing;
   }
 
   // The candidates of one relocation, by variable: the vertices with a candidate, in the order of
@@ -565,7 +494,9 @@ private:
         m_tracking.mark_moved(c.moving[i]);
   }
 
-  // Pairs of intersecting triangles (exact predicates) away from the input's own intersections:
+  // Pairs of intersecting triangles (exact predicates) away from the input's own intersections
+  // (the input's intersecting pairs grown by its mean edge length, the zone where its
+  // intersections may stay):
   // a pair whose two triangles both reach into the zone of one intersecting pair of the input is
   // the input's. With `touched` (by vertex), only pairs with a triangle incident to a touched
   // vertex, which are all the new ones when the mesh had none before those vertices moved.
@@ -574,32 +505,12 @@ private:
     std::vector<std::pair<Face, Face> > fresh;
     for(const auto& p : touched ? m_intersections.pairs_touching(*touched) : m_intersections.all_pairs())
     {
-      const CGAL::Bbox_3 first = grown_box(p.first, p.first, 0), second = grown_box(p.second, p.second, 0);
+      const CGAL::Bbox_3 first = box_around(m_mesh, p.first, p.first, 0), second = box_around(m_mesh, p.second, p.second, 0);
       if(std::none_of(m_input_intersection_zones.begin(), m_input_intersection_zones.end(),
                       [&](const CGAL::Bbox_3& z) { return CGAL::do_overlap(z, first) && CGAL::do_overlap(z, second); }))
         fresh.push_back(p);
     }
     return fresh;
-  }
-
-  // The box of the triangles f and g grown by r on every side. The input's intersecting pairs
-  // are grown by its mean edge length (the zone where its intersections may stay); a triangle a
-  // connectivity pass made intersect, after a second failure, by twice that (the region the next
-  // attempts leave alone; not the target's length, which a coarse target makes large enough to
-  // freeze a coarsening).
-  CGAL::Bbox_3 grown_box(Face f, Face g, double r) const
-  {
-    CGAL::Bbox_3 b;
-    for(Face h : {f, g})
-      for(Vertex u : face_vertices(m_mesh, h))
-        b += m_mesh.point(u).bbox();
-    return grown(b, r);
-  }
-
-  // b grown by r on every side.
-  static CGAL::Bbox_3 grown(const CGAL::Bbox_3& b, double r)
-  {
-    return CGAL::Bbox_3(b.xmin() - r, b.ymin() - r, b.zmin() - r, b.xmax() + r, b.ymax() + r, b.zmax() + r);
   }
 
   Work_mesh& m_mesh;
@@ -609,8 +520,8 @@ private:
   const std::vector<Vertex_kind> m_reference_kind;    // by reference vertex
   Feature_polylines<Work_mesh> m_polylines;
   Remeshing_options m_options;
-  Sizing m_sizing;
   double m_input_mean_length;
+  Sizing_field m_sizing;
   std::size_t m_round = 0; // relocations so far: with the vertex, it seeds the vertex's random numbers
   Tracking_state m_state;  // kinds, y_s0 (its frame gives the tangent plane and rho), hints
   Reference_tracking m_tracking;

@@ -9,6 +9,7 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/remeshing_options.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
@@ -26,13 +27,20 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Graphcut_remeshing {
 
-// The target edge length at a point of the reference: the mean edge length of the input, shorter
-// where the surface is curved so that a chord of that length stays within `tolerance` of it
-// (l = sqrt(6 tolerance rho - 3 tolerance^2)), never below half the mean. With `target` (by
-// reference vertex, see curvature_sizing()) the connectivity stage re-samples the surface to it.
-struct Sizing
+// The target edge lengths of the connectivity stage and the rules that compare an edge with them,
+// as CGAL's Sizing_field_base: an edge is too long beyond 4/3 of its target and too short below
+// 4/5 of it. Two fields re-sample the surface (a target by reference vertex): the count-matched
+// curvature field (curvature_sizing()) and the error-bounded field (tolerance_sizing()). Without
+// them (the paper's connectivity) the target is the longest length, shorter where the reference's
+// frame is curved.
+struct Sizing_field
 {
-  double mean_length = 0;
+  static constexpr double too_long_ratio = 4.0 / 3.0;
+  static constexpr double too_short_ratio = 4.0 / 5.0;
+
+  // The longest target: the mean edge length of the input or the length asked for (the paper's
+  // field), the longest edge of the error-bounded field.
+  double longest = 0;
   // How far a chord of the target length may leave the surface: the user's sizing tolerance, or,
   // with a curvature_sizing() field, the one that field was solved for.
   double tolerance = 1e-3;
@@ -42,31 +50,66 @@ struct Sizing
   double corner_angle = 0;
   std::vector<double> target; // by reference vertex; empty: the length comes from the frames
   // The user asked for the length (not the input's mean): the density comes first, see
-  // Connectivity_optimizer::tolerance_for().
+  // tolerance_for().
   bool target_asked_for = false;
   // The user asked for a density (a length, with or without a tolerance): a free vertex may
-  // collapse into a feature line (see Connectivity_optimizer::resampling_collapse_gain()).
+  // collapse into a feature line (see Edge_collapses::resampling_gain()).
   bool into_lines = false;
   // The user asked for a length of at least covering_length_ratio times the input's mean edge
   // length: the triangles span several reference vertices and may cut a tip between them off, or
-  // an edge cut across a crease, which the connectivity stage then covers (see
-  // Connectivity_optimizer::cover_reference(), cover_chords()). At a finer length every reference
-  // vertex is near a vertex of the mesh, and a vertex put there only makes thin triangles.
+  // an edge cut across a crease, which the connectivity stage then covers (coverings.h). At a
+  // finer length every reference vertex is near a vertex of the mesh, and a vertex put there only
+  // makes thin triangles.
   bool covers_reference = false;
 
+  // Whether the connectivity stage re-samples the surface to this field: the one place that
+  // decides it once the field is made.
   bool resamples() const { return !target.empty(); }
 
+  // The target at the reference vertex y.
+  double at(Work_mesh::Vertex_index y, const Reference_surface<Work_mesh>& reference) const
+  {
+    return resamples() ? target[std::size_t(y)] : length(reference.frame(y));
+  }
+
+  // The target of an edge whose ends are tracked to the reference vertices ya and yb.
+  double edge_target(Work_mesh::Vertex_index ya, Work_mesh::Vertex_index yb,
+                     const Reference_surface<Work_mesh>& reference) const
+  {
+    return (std::min)(at(ya, reference), at(yb, reference));
+  }
+
+  static bool is_too_long(double length, double target) { return length > too_long_ratio * target; }
+  static bool is_too_short(double length, double target) { return length < too_short_ratio * target; }
+  // By how much an edge is too long or too short, relative to its target (positive when it is).
+  static double excess(double length, double target) { return length / target - too_long_ratio; }
+  static double shortfall(double length, double target) { return 1 - length / (too_short_ratio * target); }
+
+  // How far a triangle or a chord whose longest side is `length` may leave the reference where
+  // the target is `target`: the tolerance, how far a triangle of the target length does. When
+  // the user asked for the length, a triangle longer than its target (up to 4/3 of it: a
+  // coarsening collapse makes such triangles) may leave it as far as its length implies, the
+  // sagitta growing as the length squared; else the curved parts keep the short edges that make
+  // the fit.
+  double tolerance_for(double length, double target) const
+  {
+    const double ratio = length / target;
+    return target_asked_for ? tolerance * (std::max)(1.0, ratio * ratio) : tolerance;
+  }
+
+private:
+  // The paper's field: the longest length, shorter where the surface is curved so that a chord
+  // of that length stays within `tolerance` of it (l = sqrt(6 tolerance rho - 3 tolerance^2)),
+  // never below half the longest.
   double length(const Local_frame& f) const
   {
     const double rho = f.min_radius();
     if(!std::isfinite(rho))
-      return mean_length;
+      return longest;
     const double l2 = 6 * tolerance * rho - 3 * tolerance * tolerance;
     const double curved = l2 > 0 ? std::sqrt(l2) : 0;
-    return (std::max)(0.5 * mean_length, (std::min)(mean_length, curved));
+    return (std::max)(0.5 * longest, (std::min)(longest, curved));
   }
-
-  double length(Work_mesh::Vertex_index reference_vertex) const { return target[std::size_t(reference_vertex)]; }
 };
 
 // The mean length of the edges of m (0 without edges).
@@ -149,9 +192,9 @@ inline void grade_sizing(const Work_mesh& m, double gradation, std::vector<doubl
 }
 
 // The coarsest length, relative to the input's mean edge length, at which the input's own edges
-// are all within the re-sampling's bounds (4/5 and 4/3 of the length) on average: up to it the
-// re-sampling keeps about the input's vertices, and nothing is covered (Sizing::covers_reference).
-constexpr double covering_length_ratio = 4.0 / 3.0;
+// are all within the re-sampling's bounds on average: up to it the re-sampling keeps about the
+// input's vertices, and nothing is covered (Sizing_field::covers_reference).
+constexpr double covering_length_ratio = Sizing_field::too_long_ratio;
 
 // Neighbouring target lengths differ by at most this times the distance between them.
 constexpr double sizing_gradation = 0.5;
@@ -169,12 +212,12 @@ constexpr double longest_to_asked_target = 1.25;
 // triangles keep within `tolerance` of a sphere of the curvature radius at their centroids,
 // between `shortest` and `longest`, graded. No count is matched: the tolerance, not a density, is
 // what the user asked for, and the collapses keep to it.
-inline Sizing tolerance_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double tolerance,
-                               double shortest, double longest, double corner_angle)
+inline Sizing_field tolerance_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double tolerance,
+                                     double shortest, double longest, double corner_angle)
 {
   const std::vector<double> radius = smooth_edge_radii(m, feature_edge, corner_angle);
-  Sizing sizing;
-  sizing.mean_length = longest;
+  Sizing_field sizing;
+  sizing.longest = longest;
   sizing.tolerance = tolerance;
   sizing.corner_angle = corner_angle;
   sizing.target.assign(m.num_vertices(), longest);
@@ -190,7 +233,7 @@ inline Sizing tolerance_sizing(const Work_mesh& m, const std::vector<char>& feat
 // times the mean length, graded; the tolerance is chosen so that the field asks for as many
 // triangles as the mean length would everywhere (sum of area / l^2), so that the vertex count
 // stays the input's while the curved parts get the short edges and the flat parts the long ones.
-inline Sizing curvature_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double mean_length,
+inline Sizing_field curvature_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double mean_length,
                                double corner_angle, double longest)
 {
   const std::vector<double> radius = smooth_edge_radii(m, feature_edge, corner_angle);
@@ -198,8 +241,8 @@ inline Sizing curvature_sizing(const Work_mesh& m, const std::vector<char>& feat
   double budget = 0;
   for(Work_mesh::Vertex_index v : m.vertices())
     budget += area[std::size_t(v)] / (mean_length * mean_length);
-  Sizing sizing;
-  sizing.mean_length = mean_length;
+  Sizing_field sizing;
+  sizing.longest = longest * mean_length;
   sizing.corner_angle = corner_angle;
   sizing.target.assign(m.num_vertices(), mean_length);
   auto fill = [&](double tolerance) {
@@ -232,6 +275,37 @@ inline Sizing curvature_sizing(const Work_mesh& m, const std::vector<char>& feat
   const double stretch = budget > 0 && count > 0 ? std::sqrt(count / budget) : 1;
   for(double& t : sizing.target)
     t *= stretch;
+  return sizing;
+}
+
+// The target edge lengths of the connectivity stage: a curvature-adapted field around the
+// target (or mean) length when it re-samples, else that length with the user's tolerance for
+// the curved parts.
+inline Sizing_field make_sizing_field(const Work_mesh& reference, const std::vector<char>& feature_edge,
+                                      const Remeshing_options& options, double input_mean_length)
+{
+  const double length = options.target_edge_length > 0 ? options.target_edge_length : input_mean_length;
+  if(options.resampling && options.error_bounded_sizing)
+  {
+    const double longest = options.edge_length_bounds.second > 0 ? options.edge_length_bounds.second : length;
+    const double shortest =
+      options.edge_length_bounds.first > 0 ? options.edge_length_bounds.first : Remeshing_options::shortest_to_target * longest;
+    Sizing_field sizing = tolerance_sizing(reference, feature_edge, options.sizing_tolerance, shortest, longest,
+                                           options.sharp_angle_bounds.second);
+    sizing.into_lines = options.target_edge_length > 0;
+    return sizing;
+  }
+  if(options.resampling)
+  {
+    const double longest = options.target_edge_length > 0 ? longest_to_asked_target : longest_to_mean_length;
+    Sizing_field sizing = curvature_sizing(reference, feature_edge, length, options.sharp_angle_bounds.second, longest);
+    sizing.target_asked_for = sizing.into_lines = options.target_edge_length > 0;
+    sizing.covers_reference = sizing.target_asked_for && length >= covering_length_ratio * input_mean_length;
+    return sizing;
+  }
+  Sizing_field sizing;
+  sizing.longest = length;
+  sizing.tolerance = options.sizing_tolerance;
   return sizing;
 }
 

@@ -28,11 +28,7 @@ namespace Graphcut_remeshing {
 // working mesh's indices.
 struct Tracking_state
 {
-  // Values of `feature_edge`.
-  static constexpr char sharp_or_border_edge = sharp_or_border_feature_edge;
-  static constexpr char constrained_edge = constrained_feature_edge;
-
-  std::vector<char> feature_edge;            // by edge: 0, or one of the values above
+  std::vector<char> feature_edge;            // by edge: 0, sharp_or_border_feature_edge or constrained_feature_edge
   std::vector<Vertex_kind> kind;             // by vertex
   std::vector<Work_mesh::Vertex_index> closest; // by vertex: y_s0
   std::vector<Work_mesh::Face_index> vertex_hint; // by vertex: nearest reference triangle
@@ -40,6 +36,28 @@ struct Tracking_state
   std::vector<char> frozen;                  // by vertex: no connectivity change may touch it
   std::vector<Feature_polylines<Work_mesh>::Location> location; // by vertex: place on its polyline
   std::vector<Work_mesh::Face_index> edge_hint; // by edge: nearest reference triangle of its midpoint
+
+  // Grows the arrays to m's capacity (removed elements included), after an operation added
+  // elements: a new vertex is free, a new edge no feature.
+  void fit(const Work_mesh& m)
+  {
+    const std::size_t nv = m.num_vertices(), ne = m.num_edges(), nf = m.num_faces();
+    if(kind.size() < nv)
+    {
+      kind.resize(nv, Vertex_kind::free_vertex);
+      closest.resize(nv);
+      vertex_hint.resize(nv);
+      frozen.resize(nv, 0);
+      location.resize(nv);
+    }
+    if(feature_edge.size() < ne)
+    {
+      feature_edge.resize(ne, 0);
+      edge_hint.resize(ne);
+    }
+    if(face_hint.size() < nf)
+      face_hint.resize(nf);
+  }
 };
 
 // Where a vertex at the end of a feature edge is on its reference polyline. A fixed vertex (a

@@ -10,6 +10,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -93,6 +94,22 @@ inline std::vector<char> changed_vertices(const Work_mesh& before, const Work_me
       for(Work_mesh::Vertex_index v : face_vertices(after, f))
         changed[std::size_t(v)] = 1;
   return changed;
+}
+
+// b grown by r on every side.
+inline CGAL::Bbox_3 grown_by(const CGAL::Bbox_3& b, double r)
+{
+  return CGAL::Bbox_3(b.xmin() - r, b.ymin() - r, b.zmin() - r, b.xmax() + r, b.ymax() + r, b.zmax() + r);
+}
+
+// The box of the triangles f and g of `mesh` grown by r on every side.
+inline CGAL::Bbox_3 box_around(const Work_mesh& mesh, Work_mesh::Face_index f, Work_mesh::Face_index g, double r)
+{
+  CGAL::Bbox_3 b;
+  for(Work_mesh::Face_index h : {f, g})
+    for(Work_mesh::Vertex_index u : face_vertices(mesh, h))
+      b += mesh.point(u).bbox();
+  return grown_by(b, r);
 }
 
 } // namespace Graphcut_remeshing

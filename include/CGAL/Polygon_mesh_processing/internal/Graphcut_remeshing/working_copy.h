@@ -97,7 +97,7 @@ public:
 
   // By edge of the working copy: the sharp edges of eq. (8) (hysteresis bounds in degrees),
   // border edges, and the user's constrained edges (`ecm`), those as
-  // Tracking_state::constrained_edge; the kinds of the vertices with them, where a border that
+  // constrained_feature_edge; the kinds of the vertices with them, where a border that
   // turns by more than the upper bound is a corner, and so is a strong crease that turns by more
   // than `crease_turn_angle` (see classify_vertices()); with `follow_creases`, fading creases run on
   // (see detect_sharp_edges()); sharp lines shorter than `shortest_sharp_line` are dropped (see
@@ -127,13 +127,13 @@ public:
             sharp_or_border_feature_edge;
       }
     for(const auto& seam : m_seam_edges)
-      feature_edge[std::size_t(work.edge(work.halfedge(seam.first, seam.second)))] = Tracking_state::constrained_edge;
+      feature_edge[std::size_t(work.edge(work.halfedge(seam.first, seam.second)))] = constrained_feature_edge;
     for(face_descriptor f : m_region)
       for(halfedge_descriptor h : halfedges_around_face(halfedge(f, m_tmesh), m_tmesh))
         if(get(ecm, edge(h, m_tmesh)))
         {
           const auto wh = work.halfedge(to_work(source(h, m_tmesh)), to_work(target(h, m_tmesh)));
-          feature_edge[std::size_t(work.edge(wh))] = Tracking_state::constrained_edge;
+          feature_edge[std::size_t(work.edge(wh))] = constrained_feature_edge;
           m_user_edges.emplace_back(work.source(wh), work.target(wh));
           if(!relax_constraints)
             m_constrained_vertex[std::size_t(work.source(wh))] = m_constrained_vertex[std::size_t(work.target(wh))] = 1;

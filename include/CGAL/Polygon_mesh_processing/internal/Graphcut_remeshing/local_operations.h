@@ -1,0 +1,207 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What the connectivity operations of section 3 share: the working mesh with its tracking state,
+// the reference, the sizing field and the feature polylines; the acceptability of a new triangle
+// and the fold check of a new fan, the projection onto the reference, and the binding of a new
+// vertex to the reference.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_LOCAL_OPERATIONS_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_LOCAL_OPERATIONS_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/guarantees.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/sizing.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/tracking.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
+
+#include <boost/container/small_vector.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdlib>
+#include <initializer_list>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Graphcut_remeshing {
+
+// The smallest angle of the triangle (a, b, c).
+inline double smallest_angle(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c)
+{
+  const std::array<double, 3> angles = triangle_angles(a, b, c);
+  return (std::min)({angles[0], angles[1], angles[2]});
+}
+
+// The base of the operations (edge_flips.h, edge_splits.h, edge_collapses.h, vertex_splits.h,
+// relaxation.h, coverings.h): references to what they change and read, and the small predicates
+// they share. Copying it copies the references.
+class Local_operations
+{
+protected:
+  using Vertex = Work_mesh::Vertex_index;
+  using Halfedge = Work_mesh::Halfedge_index;
+  using Edge = Work_mesh::Edge_index;
+  using Face = Work_mesh::Face_index;
+  using Location = Feature_polylines<Work_mesh>::Location;
+
+public:
+  // Beyond the paper: no operation and no relaxation step turns a triangle by more than 60
+  // degrees (this cosine) from the surface it replaces. Where the sampling is fine enough for the
+  // shape none needs to; more folds a thin triangle along a crease or a stretched part, where the
+  // reference's normal alone can be either side's.
+  static constexpr double min_turn_cosine = 0.5;
+
+  // `polylines`, the reference's feature polylines, lets long sharp edges be split and feature
+  // lines be re-sampled (none are without it).
+  Local_operations(Work_mesh& mesh, const Reference_surface<Work_mesh>& reference, Tracking_state& state,
+                   const Sizing_field& sizing, const Feature_polylines<Work_mesh>* polylines = nullptr)
+    : m_mesh(mesh), m_reference(reference), m_state(state), m_sizing(sizing), m_polylines(polylines)
+  {
+    m_state.fit(m_mesh);
+  }
+
+  Vector_3d position(Vertex v) const { return to_vector(m_mesh.point(v)); }
+
+  bool is_free(Vertex v) const
+  {
+    return m_state.kind[std::size_t(v)] == Vertex_kind::free_vertex && !is_frozen(v);
+  }
+  bool is_frozen(Vertex v) const { return m_state.frozen[std::size_t(v)] != 0; }
+
+  // The halfedge of e on a face (e's own halfedge unless that one is on the border).
+  Halfedge face_side(Edge e) const
+  {
+    const Halfedge h = m_mesh.halfedge(e);
+    return m_mesh.is_border(h) ? m_mesh.opposite(h) : h;
+  }
+
+  // How |valence - 6| (4 on a border) changes when v's valence changes by `delta`.
+  int deviation_change(Vertex v, int delta) const
+  {
+    const int target = m_mesh.is_border(v) ? 4 : 6;
+    const int d = int(m_mesh.degree(v));
+    return std::abs(d + delta - target) - std::abs(d - target);
+  }
+
+  // A triangle an operation may create in place of triangles of area vector `replaced`: not
+  // degenerate, not turned by more than 60 degrees from them, not turned over against the
+  // reference (its normal where the triangle's centroid is closest to it, searched from `near`'s
+  // triangle).
+  bool acceptable(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c, Vertex near,
+                  const Vector_3d& replaced) const
+  {
+    if(!is_acceptable_triangle(a, b, c, replaced, min_turn_cosine))
+      return false;
+    Face hint = m_state.vertex_hint[std::size_t(near)];
+    m_reference.closest_point((a + b + c) / 3, hint);
+    return is_acceptable_triangle(a, b, c, m_reference.normal(hint));
+  }
+
+  Vector_3d project(const Vector_3d& x, Vertex near) const
+  {
+    Face hint = m_state.vertex_hint[std::size_t(near)];
+    return m_reference.closest_point(x, hint);
+  }
+
+  Location feature_location(Vertex v) const { return line_location(m_state, *m_polylines, v); }
+
+  // The point of the reference polyline halfway, along it, from a to b, the ends of a sharp edge.
+  Location feature_midpoint(Vertex a, Vertex b) const
+  {
+    return m_polylines->move(feature_location(a), (position(b) - position(a)) / 2);
+  }
+
+  double distance_to_reference(const Vector_3d& x, Vertex near) const
+  {
+    return (x - project(x, near)).norm();
+  }
+
+  // The target length of the edge from a to b, by the reference vertices they are tracked to.
+  double edge_length_target(Vertex a, Vertex b) const
+  {
+    return m_sizing.edge_target(m_state.closest[std::size_t(a)], m_state.closest[std::size_t(b)], m_reference);
+  }
+
+  // A new or moved vertex is tracked from its neighbour's reference elements, then by the same
+  // local searches as every vertex.
+  void bind_new_vertex(Vertex v, Vertex from, Vertex_kind kind = Vertex_kind::free_vertex)
+  {
+    m_state.kind[std::size_t(v)] = kind;
+    m_state.frozen[std::size_t(v)] = 0;
+    m_state.closest[std::size_t(v)] = m_state.closest[std::size_t(from)];
+    m_state.vertex_hint[std::size_t(v)] = m_state.vertex_hint[std::size_t(from)];
+    const Vector_3d x = position(v);
+    m_state.closest[std::size_t(v)] = m_reference.closest_vertex(x, m_state.closest[std::size_t(v)]);
+    m_reference.closest_point(x, m_state.vertex_hint[std::size_t(v)]);
+  }
+
+  // Whether the triangles (source(g), target(g), x) that an operation makes, one for each halfedge
+  // g of `link` (g on the triangle it replaces), fold (guarantees.h) neither onto each other,
+  // across their edges at x, nor onto the triangles across the g: a vertex placed or moved off the
+  // mesh (on a tip, on a coarse tube) may turn a new triangle over its neighbour. The vertex at x
+  // replaces those of `replaced`; an edge that was folded already or is a feature edge may stay
+  // folded, as the guarantee allows.
+  template <typename Link>
+  bool fan_unfolded(const Link& link, const Vector_3d& x, std::initializer_list<Vertex> replaced = {}) const
+  {
+    const auto exempt = [&](Halfedge h) {
+      return m_state.feature_edge[std::size_t(m_mesh.edge(h))] || is_folded_edge(m_mesh, h);
+    };
+    const auto exempt_at_x = [&](Vertex w) {
+      for(Vertex u : replaced)
+      {
+        const Halfedge h = m_mesh.halfedge(u, w);
+        if(h != Work_mesh::null_halfedge() && exempt(h))
+          return true;
+      }
+      return false;
+    };
+    boost::container::small_vector<Vector_3d, 16> fan;
+    for(Halfedge g : link)
+    {
+      fan.push_back(area_vector(position(m_mesh.source(g)), position(m_mesh.target(g)), x));
+      const Halfedge across = m_mesh.opposite(g);
+      if(!m_mesh.is_border(across) && is_folded_pair(fan.back(), face_area_vector(m_mesh, across)) && !exempt(g))
+        return false;
+    }
+    for(std::size_t k = 0; k < link.size(); ++k)
+      for(std::size_t j = 0; j < link.size(); ++j)
+        if(m_mesh.target(link[k]) == m_mesh.source(link[j]) && is_folded_pair(fan[k], fan[j]) &&
+           !exempt_at_x(m_mesh.target(link[k])))
+          return false;
+    return true;
+  }
+
+  // The smallest angle of the triangles around a and b.
+  double smallest_angle_around(Vertex a, Vertex b) const
+  {
+    double smallest = pi;
+    for(Vertex u : {a, b})
+      for(Halfedge g : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
+        if(!m_mesh.is_border(g))
+          smallest = (std::min)(smallest, smallest_angle(position(u), position(m_mesh.target(m_mesh.next(g))),
+                                                         position(m_mesh.source(g))));
+    return smallest;
+  }
+
+protected:
+  Work_mesh& m_mesh;
+  const Reference_surface<Work_mesh>& m_reference;
+  Tracking_state& m_state;
+  const Sizing_field& m_sizing;
+  const Feature_polylines<Work_mesh>* m_polylines;
+};
+
+} // namespace Graphcut_remeshing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_LOCAL_OPERATIONS_H
