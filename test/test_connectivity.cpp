@@ -90,7 +90,6 @@ public:
     }
     state.closest.resize(mesh.num_vertices());
     state.vertex_hint.resize(mesh.num_vertices());
-    state.frozen.assign(mesh.num_vertices(), 0);
     for(auto v : mesh.vertices())
     {
       state.closest[std::size_t(v)] = v;

@@ -159,8 +159,8 @@ Sizing_request sizing_request(const NamedParameters& np)
 
 template <typename TriangleMesh, typename InRegion, typename NamedParameters>
 Graphcut_remeshing_statistics
-remesh(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> region,
-       const InRegion& in_region, double target_edge_length, const NamedParameters& np)
+remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> region,
+             const InRegion& in_region, double target_edge_length, const NamedParameters& np)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -492,7 +492,7 @@ graphcut_isotropic_remeshing(TriangleMesh& tmesh,
                              const NamedParameters& np = parameters::default_values())
 {
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> all(faces(tmesh).begin(), faces(tmesh).end());
-  return internal::Graphcut_remeshing::remesh(tmesh, std::move(all), [](const auto&) { return true; }, 0., np);
+  return internal::Graphcut_remeshing::remesh_faces(tmesh, std::move(all), [](const auto&) { return true; }, 0., np);
 }
 
 /*!
@@ -565,7 +565,7 @@ graphcut_isotropic_remeshing(const FaceRange& face_range, const double target_ed
       region.push_back(f);
   if(region.empty())
     return Graphcut_remeshing_statistics();
-  return internal::Graphcut_remeshing::remesh(
+  return internal::Graphcut_remeshing::remesh_faces(
     tmesh, std::move(region), [&](face_descriptor f) { return in_range[get(face_index, f)] != 0; },
     target_edge_length, np);
 }

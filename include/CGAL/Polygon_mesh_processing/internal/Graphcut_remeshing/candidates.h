@@ -93,6 +93,15 @@ Vector_3d laplacian_target(const Vector_3d& x, const PointRange& ring)
   return count > 0 ? Vector_3d(sum / count) : x;
 }
 
+// The smoothing of section 3.2, which the candidates of section 2.3 also propose: the angle-based
+// target when take(target) takes it, else the Laplacian one (`ring()`, the ring's points, asked
+// for only then). Returns whether one was taken.
+template <typename Ring, typename Take>
+bool take_smoothing_target(const Vector_3d& x, const Link& link, const Ring& ring, const Take& take)
+{
+  return take(angle_based_target(x, link)) || take(laplacian_target(x, ring()));
+}
+
 // eq. (5): sigma = 0.5 / (1 + exp(-T)) * ring radius * min(1, rho).
 inline double freedom_radius(double temperature, double ring_radius, double min_curvature_radius)
 {
@@ -161,9 +170,9 @@ public:
     };
     if(!greedy)
     {
-      if(accept(on_surface(x + m_smoothing_step * tangential(angle_based_target(x, link) - x, frame.normal))))
-        return true;
-      if(accept(on_surface(x + m_smoothing_step * tangential(laplacian_target(x, ring(v)) - x, frame.normal))))
+      if(take_smoothing_target(x, link, [&] { return ring(v); }, [&](const Vector_3d& target) {
+           return accept(on_surface(x + m_smoothing_step * tangential(target - x, frame.normal)));
+         }))
         return true;
       // Guided random: a random direction of the tangent plane, a random length in the sphere.
       for(int attempt = 0; attempt < 3; ++attempt)

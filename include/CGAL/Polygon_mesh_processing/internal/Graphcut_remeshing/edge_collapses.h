@@ -125,9 +125,8 @@ public:
       return Plan();
     // When the user asked for a density: a free edge with one end on a feature line or fixed, the
     // free end goes to the other, which stays where it is. A coarse target needs these collapses
-    // (without them the lines' neighbours hold their vertices: cow at twice its mean edge length
-    // kept 1616 vertices, 1500 with them); at the input's density they only thin the triangles
-    // next to the lines (handle: 1.3 % of its triangles below 30 degrees instead of 0.4 %).
+    // (without them the lines' neighbours hold their vertices); at the input's density they only
+    // thin the triangles next to the lines (the manual, "A Density and a Region").
     const bool into_feature = m_sizing.into_lines && !feature && is_free(a) != is_free(b);
     // The ways to collapse e: where the kept vertex goes.
     boost::container::small_vector<Collapse, 3> trials;
@@ -151,8 +150,8 @@ public:
     // of such vertices), and no two feature edges merge (the free end of a collapse into a line
     // has none). When the user asked for a density, a feature edge's triangle may have one
     // feature edge beside it, which the merged edge carries on: a line leaving a corner next to a
-    // short segment (fandisk at four times its mean edge length kept 15 such segments shorter
-    // than half their target), or the next segment of the line at an ear.
+    // short segment (without it such segments stay, shorter than half their target), or the next
+    // segment of the line at an ear.
     for(Halfedge g : {h, m_mesh.opposite(h)})
       if(!m_mesh.is_border(g))
       {

@@ -26,6 +26,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <initializer_list>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -59,10 +60,14 @@ public:
   static constexpr double min_turn_cosine = 0.5;
 
   // `polylines`, the reference's feature polylines, lets long sharp edges be split and feature
-  // lines be re-sampled (none are without it).
+  // lines be re-sampled (none are without it). No operation touches a vertex v with frozen[v]
+  // (by vertex index; a vertex beyond its end is not frozen): frozen vertices are never removed,
+  // so that the index of a removed vertex that a new one takes was not frozen either.
   Local_operations(Work_mesh& mesh, const Reference_surface<Work_mesh>& reference, Tracking_state& state,
-                   const Sizing_field& sizing, const Feature_polylines<Work_mesh>* polylines = nullptr)
-    : m_mesh(mesh), m_reference(reference), m_state(state), m_sizing(sizing), m_polylines(polylines)
+                   const Sizing_field& sizing, const Feature_polylines<Work_mesh>* polylines = nullptr,
+                   const std::vector<char>& frozen = nothing_frozen())
+    : m_mesh(mesh), m_reference(reference), m_state(state), m_sizing(sizing), m_polylines(polylines),
+      m_frozen(frozen)
   {
     m_state.fit(m_mesh);
   }
@@ -73,7 +78,13 @@ public:
   {
     return m_state.kind[std::size_t(v)] == Vertex_kind::free_vertex && !is_frozen(v);
   }
-  bool is_frozen(Vertex v) const { return m_state.frozen[std::size_t(v)] != 0; }
+  bool is_frozen(Vertex v) const { return std::size_t(v) < m_frozen.size() && m_frozen[std::size_t(v)] != 0; }
+
+  static const std::vector<char>& nothing_frozen()
+  {
+    static const std::vector<char> none;
+    return none;
+  }
 
   // The halfedge of e on a face (e's own halfedge unless that one is on the border).
   Halfedge face_side(Edge e) const
@@ -134,7 +145,6 @@ public:
   void bind_new_vertex(Vertex v, Vertex from, Vertex_kind kind = Vertex_kind::free_vertex)
   {
     m_state.kind[std::size_t(v)] = kind;
-    m_state.frozen[std::size_t(v)] = 0;
     m_state.closest[std::size_t(v)] = m_state.closest[std::size_t(from)];
     m_state.vertex_hint[std::size_t(v)] = m_state.vertex_hint[std::size_t(from)];
     const Vector_3d x = position(v);
@@ -197,6 +207,7 @@ protected:
   Tracking_state& m_state;
   const Sizing_field& m_sizing;
   const Feature_polylines<Work_mesh>* m_polylines;
+  const std::vector<char>& m_frozen;
 };
 
 } // namespace Graphcut_remeshing

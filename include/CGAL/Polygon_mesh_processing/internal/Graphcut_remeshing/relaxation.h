@@ -73,7 +73,7 @@ public:
         return true;
       };
       // A vertex already where it should be stays: it is not counted as moved.
-      if((try_move(angle_based_target(x, link)) || try_move(laplacian_target(x, ring))) && position(v) != x)
+      if(take_smoothing_target(x, link, [&]() -> const auto& { return ring; }, try_move) && position(v) != x)
         ++moved;
     }
     return moved;

@@ -291,16 +291,16 @@ private:
       const Work_mesh mesh_before = m_mesh;
       const Tracking_state state_before = m_state;
       const std::size_t folds_before = folded_edges(m_mesh, &m_state.feature_edge);
-      m_state.frozen.assign(m_mesh.num_vertices(), 0);
+      std::vector<char> frozen(m_mesh.num_vertices(), 0);
       for(Vertex v : m_mesh.vertices())
         for(const Keep_out& k : m_keep_out)
           if(CGAL::do_overlap(k.box, m_mesh.point(v).bbox()))
-            m_state.frozen[std::size_t(v)] = 1;
+            frozen[std::size_t(v)] = 1;
       Connectivity_optimizer optimizer(m_mesh, m_reference, m_state, m_sizing, &m_polylines,
                                        [this](Vertex v, const Vector_3d& x, double bound) {
                                          return m_energy.local_evidence(v, x, bound);
                                        },
-                                       m_options.operations);
+                                       m_options.operations, frozen);
       const Connectivity_counts counts = pass(optimizer);
       m_energy.collect_feature_edges();
       // The mesh had no new intersections before the pass: only triangles it changed or moved

@@ -112,6 +112,16 @@ private:
   }
 };
 
+// The edge length of the re-sampling fields where the curvature radius is `rho`: the equilateral
+// triangles keep within `tolerance` of a sphere of that radius, to first order in tolerance / rho
+// (+inf where flat). The paper's field (Sizing_field::length()) keeps the exact length,
+// sqrt(6 tolerance rho - 3 tolerance^2): in the count-matched field the exact one measured farther
+// from the surface (the manual, "Re-sampling").
+inline double resampling_chord(double tolerance, double rho)
+{
+  return std::sqrt(6 * tolerance * rho);
+}
+
 // The mean length of the edges of m (0 without edges).
 inline double mean_edge_length(const Work_mesh& m)
 {
@@ -223,7 +233,7 @@ inline Sizing_field tolerance_sizing(const Work_mesh& m, const std::vector<char>
   sizing.target.assign(m.num_vertices(), longest);
   for(Work_mesh::Vertex_index v : m.vertices())
     sizing.target[std::size_t(v)] =
-      (std::max)(shortest, (std::min)(longest, std::sqrt(6 * tolerance * radius[std::size_t(v)])));
+      (std::max)(shortest, (std::min)(longest, resampling_chord(tolerance, radius[std::size_t(v)])));
   grade_sizing(m, sizing_gradation, sizing.target); // only from lengths of at least `shortest`
   return sizing;
 }
@@ -249,7 +259,7 @@ inline Sizing_field curvature_sizing(const Work_mesh& m, const std::vector<char>
     double count = 0;
     for(Work_mesh::Vertex_index v : m.vertices())
     {
-      const double l = std::sqrt(6 * tolerance * radius[std::size_t(v)]); // +inf when flat
+      const double l = resampling_chord(tolerance, radius[std::size_t(v)]);
       double& t = sizing.target[std::size_t(v)];
       t = (std::max)(0.5 * mean_length, (std::min)(longest * mean_length, l));
       count += area[std::size_t(v)] / (t * t);

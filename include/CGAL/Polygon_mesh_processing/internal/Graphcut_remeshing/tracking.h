@@ -33,7 +33,6 @@ struct Tracking_state
   std::vector<Work_mesh::Vertex_index> closest; // by vertex: y_s0
   std::vector<Work_mesh::Face_index> vertex_hint; // by vertex: nearest reference triangle
   std::vector<Work_mesh::Face_index> face_hint;   // by face: nearest reference triangle of its centroid
-  std::vector<char> frozen;                  // by vertex: no connectivity change may touch it
   std::vector<Feature_polylines<Work_mesh>::Location> location; // by vertex: place on its polyline
   std::vector<Work_mesh::Face_index> edge_hint; // by edge: nearest reference triangle of its midpoint
 
@@ -47,7 +46,6 @@ struct Tracking_state
       kind.resize(nv, Vertex_kind::free_vertex);
       closest.resize(nv);
       vertex_hint.resize(nv);
-      frozen.resize(nv, 0);
       location.resize(nv);
     }
     if(feature_edge.size() < ne)
@@ -96,7 +94,6 @@ public:
     m_state.closest.resize(n);
     m_state.location.resize(n);
     m_state.vertex_hint.resize(n);
-    m_state.frozen.assign(n, 0);
     m_state.face_hint.resize(m_mesh.num_faces());
     for(Face f : m_mesh.faces())
       m_state.face_hint[std::size_t(f)] = f;

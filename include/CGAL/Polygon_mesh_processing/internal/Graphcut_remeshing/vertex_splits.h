@@ -198,7 +198,6 @@ private:
       m_state.kind[std::size_t(w)] = kind;
       m_state.closest[std::size_t(w)] = closest;
       m_state.vertex_hint[std::size_t(w)] = hint;
-      m_state.frozen[std::size_t(w)] = 0;
     }
     const std::size_t span = (s.j + n - s.i) % n;
     auto add = [&](Vertex u, Vertex w, Vertex z) {
