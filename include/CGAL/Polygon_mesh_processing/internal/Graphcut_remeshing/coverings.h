@@ -237,9 +237,7 @@ public:
           for(Halfedge g : halfedges_around_target(hv, m_mesh))
             m_state.feature_edge[std::size_t(m_mesh.edge(g))] = 0;
           bind_new_vertex(v, from);
-          for(Halfedge g : halfedges_around_target(hv, m_mesh))
-            if(!m_mesh.is_border(g))
-              m_state.face_hint[std::size_t(m_mesh.face(g))] = m_state.vertex_hint[std::size_t(v)];
+          track_faces_from(v);
           return v;
         }
       }

@@ -231,9 +231,7 @@ public:
     }
     else if(is_free(v))
       bind_new_vertex(v, v);
-    for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
-      if(!m_mesh.is_border(g))
-        m_state.face_hint[std::size_t(m_mesh.face(g))] = m_state.vertex_hint[std::size_t(v)];
+    track_faces_from(v);
     return v;
   }
 

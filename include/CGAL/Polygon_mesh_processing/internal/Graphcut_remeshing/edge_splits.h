@@ -149,9 +149,7 @@ public:
       m_state.location[std::size_t(v)] = on_feature;
     }
     bind_new_vertex(v, a, feature ? Vertex_kind::feature_vertex : Vertex_kind::free_vertex);
-    for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
-      if(!m_mesh.is_border(g))
-        m_state.face_hint[std::size_t(m_mesh.face(g))] = m_state.vertex_hint[std::size_t(v)];
+    track_faces_from(v);
     return v;
   }
 

@@ -189,6 +189,14 @@ public:
     return true;
   }
 
+  // The triangles around the new or moved vertex v are tracked from v's reference triangle.
+  void track_faces_from(Vertex v)
+  {
+    for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      if(!m_mesh.is_border(g))
+        m_state.face_hint[std::size_t(m_mesh.face(g))] = m_state.vertex_hint[std::size_t(v)];
+  }
+
   // The smallest angle of the triangles around a and b.
   double smallest_angle_around(Vertex a, Vertex b) const
   {
