@@ -428,34 +428,38 @@ private:
   // With the labelled candidates taken (`previous` the positions before): false when no triangle
   // around the vertices that moved has folded onto a neighbour (guarantees.h) across an edge off
   // the features, else the candidates of the moved vertices of those triangles excluded and true.
-  // (The triangle terms of the cut see one triangle at a time, never a pair.)
+  // (The triangle terms of the cut see one triangle at a time, never a pair.) Each edge is looked
+  // at once, the edges in parallel.
   bool exclude_new_folds(const Candidate_set& c, const std::vector<char>& labels,
                          const std::vector<Vector_3d>& previous, std::vector<char>& excluded)
   {
-    const auto before = [&](Vertex u) {
+    const auto moved = [&](Vertex u) {
       const std::size_t i = c.variable[std::size_t(u)];
-      return i != Relocation_cut::none && labels[i] ? previous[i] : position(u);
+      return i != Relocation_cut::none && labels[i];
     };
+    const auto before = [&](Vertex u) { return moved(u) ? previous[c.variable[std::size_t(u)]] : position(u); };
     const auto area_before = [&](Halfedge h) {
       return area_vector(before(m_mesh.source(h)), before(m_mesh.target(h)), before(m_mesh.target(m_mesh.next(h))));
     };
+    std::vector<Halfedge> folds;
+    collect_by_blocks(m_mesh.num_edges(), folds, [&](std::size_t i, std::vector<Halfedge>& found) {
+      const Edge e(static_cast<Edge::size_type>(i));
+      if(m_mesh.is_removed(e) || m_state.feature_edge[i])
+        return;
+      const Halfedge h = m_mesh.halfedge(e), o = m_mesh.opposite(h);
+      if(m_mesh.is_border(h) || m_mesh.is_border(o))
+        return;
+      const bool near_a_move = moved(m_mesh.source(h)) || moved(m_mesh.target(h)) ||
+                               moved(m_mesh.target(m_mesh.next(h))) || moved(m_mesh.target(m_mesh.next(o)));
+      if(near_a_move && is_folded_edge(m_mesh, h) && !is_folded_pair(area_before(h), area_before(o)))
+        found.push_back(h);
+    });
     bool found = false;
-    for(std::size_t i = 0; i < c.moving.size(); ++i)
-      if(labels[i])
-        for(Halfedge g : halfedges_around_target(m_mesh.halfedge(c.moving[i]), m_mesh))
-          for(Halfedge k : {g, m_mesh.prev(g)}) // the edges at the vertex, then across from it
-          {
-            if(m_mesh.is_border(g) || m_state.feature_edge[std::size_t(m_mesh.edge(k))] ||
-               !is_folded_edge(m_mesh, k) || is_folded_pair(area_before(k), area_before(m_mesh.opposite(k))))
-              continue;
-            for(Halfedge side : {k, m_mesh.opposite(k)})
-              for(Vertex u : face_vertices(m_mesh, m_mesh.face(side)))
-              {
-                const std::size_t j = c.variable[std::size_t(u)];
-                if(j != Relocation_cut::none && labels[j] && !excluded[j])
-                  excluded[j] = found = true;
-              }
-          }
+    for(Halfedge k : folds)
+      for(Halfedge side : {k, m_mesh.opposite(k)})
+        for(Vertex u : face_vertices(m_mesh, m_mesh.face(side)))
+          if(moved(u) && !excluded[c.variable[std::size_t(u)]])
+            excluded[c.variable[std::size_t(u)]] = found = true;
     return found;
   }
 
