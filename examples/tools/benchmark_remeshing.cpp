@@ -457,8 +457,9 @@ void write_table(std::ostream& out, const std::vector<Mesh_result>& results, con
 {
   const std::vector<std::pair<std::string, int>> columns = {
     {"mesh", 18},     {"vertices", 9},  {"ours s", 9},    {"CGAL s", 9},    {"ratio", 8},
-    {"us/vert", 9},   {"peak MB", 9},   {"KB/vert", 9},   {"ours min", 10}, {"ours max", 10},
-    {"CGAL min", 10}, {"CGAL max", 10}, {"ours H", 9},    {"CGAL H", 9}};
+    {"us/vert", 9},   {"ours MB", 9},   {"KB/vert", 9},   {"CGAL MB", 9},   {"MB ratio", 10},
+    {"ours min", 10}, {"ours max", 10}, {"CGAL min", 10}, {"CGAL max", 10}, {"ours H", 9},
+    {"CGAL H", 9}};
   auto cell = [&](std::size_t column, const std::string& text) {
     if(column == 0)
       out << std::left << std::setw(columns[column].second) << text << std::right;
@@ -481,12 +482,14 @@ void write_table(std::ostream& out, const std::vector<Mesh_result>& results, con
     cell(5, o.done ? fixed(1e6 * o.median_seconds / n, 0) : none);
     cell(6, o.done ? fixed(o.peak_kb / 1024, 1) : none);
     cell(7, o.done ? fixed(o.peak_kb / n, 2) : none);
-    cell(8, o.done ? fixed(o.mean_min_angle, 2) : none);
-    cell(9, o.done ? fixed(o.mean_max_angle, 2) : none);
-    cell(10, g.done ? fixed(g.mean_min_angle, 2) : none);
-    cell(11, g.done ? fixed(g.mean_max_angle, 2) : none);
-    cell(12, o.done ? fixed(1e3 * o.hausdorff, 3) : none);
-    cell(13, g.done ? fixed(1e3 * g.hausdorff, 3) : none);
+    cell(8, g.done ? fixed(g.peak_kb / 1024, 1) : none);
+    cell(9, o.done && g.done && g.peak_kb > 0 ? fixed(o.peak_kb / g.peak_kb, 2) : none);
+    cell(10, o.done ? fixed(o.mean_min_angle, 2) : none);
+    cell(11, o.done ? fixed(o.mean_max_angle, 2) : none);
+    cell(12, g.done ? fixed(g.mean_min_angle, 2) : none);
+    cell(13, g.done ? fixed(g.mean_max_angle, 2) : none);
+    cell(14, o.done ? fixed(1e3 * o.hausdorff, 3) : none);
+    cell(15, g.done ? fixed(1e3 * g.hausdorff, 3) : none);
     out << '\n';
   }
   const bool has_large = std::any_of(results.begin(), results.end(),
@@ -494,8 +497,10 @@ void write_table(std::ostream& out, const std::vector<Mesh_result>& results, con
   out << "\ntimes: median of " << repetitions << " run(s)";
   if(has_large)
     out << ", of " << large_repetitions << " on " << large_mesh_name;
-  out << "; us/vert: our microseconds per input vertex; angles: mean min/max in degrees;\n"
-      << "H: Hausdorff distance to the input, x1e-3 of its bounding-box diagonal; peak: "
+  out << "; us/vert: our microseconds per input vertex;\n"
+      << "ours MB, CGAL MB: peak resident memory (peak below); MB ratio: ours over CGAL's;\n"
+      << "angles: mean min/max in degrees; "
+      << "H: Hausdorff distance to the input, x1e-3 of its bounding-box diagonal;\npeak: "
       << (memory.per_run ? "resident memory high-water mark of the run (VmHWM after clear_refs)"
                          : "process peak resident memory (getrusage; /proc/self/clear_refs not writable)")
       << "\n";
