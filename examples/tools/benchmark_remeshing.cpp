@@ -5,7 +5,8 @@
 // isotropic_remeshing on CGAL's sample meshes and on a large mesh built from bear.off, and prints
 // the median times, the peak resident memory of each run and the quality of the results. With
 // --quality it compares instead the quality of both results, per mesh and seed, against bars; with
-// --length-factors too, both remesh at given multiples of the input's mean edge length.
+// --length-factors too, both remesh at given multiples of the input's mean edge length. With
+// --corpus it times both on every sample mesh up to a size.
 
 #include "quality_comparison.h"
 #include "tool_support.h"
@@ -20,8 +21,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -57,6 +60,7 @@ const char* const large_mesh_name = "bear_loop2_jitter";
 const std::vector<std::string> all_meshes = {"fandisk", "cow", "triceratops", "bear", large_mesh_name};
 // The tangential jitter of the large mesh is seeded, so every run benchmarks the same mesh.
 const unsigned int jitter_seed = 2026;
+const std::size_t corpus_max_vertices = 30000;
 const double cgal_sharp_angle = 35;
 const unsigned int cgal_iterations = 5;
 
@@ -117,6 +121,25 @@ std::string quality_usage()
          "                          its \"length_factor\")\n";
 }
 
+std::string corpus_usage()
+{
+  return "\n"
+         "usage: benchmark_remeshing --corpus [--max-vertices N] [--repetitions N] [--data DIR]\n"
+         "                                    [--json FILE]\n"
+         "\n"
+         "Times both remeshers, as above, on every OFF, OBJ, PLY and STL file of the data directory\n"
+         "that reads as a valid triangle mesh (after the tools' soup repair) of at most N vertices,\n"
+         "prints the table above for them, then the median, 90th percentile and largest ratio of the\n"
+         "times, and the files left out with the reason.\n"
+         "\n"
+         "  --corpus                switch to this mode\n"
+         "  --max-vertices N        the largest input to time (default " +
+         std::to_string(corpus_max_vertices) +
+         ")\n"
+         "  --repetitions N         timed runs of each method on each mesh (default 1)\n"
+         "  --data DIR, --json FILE as above\n";
+}
+
 std::string usage()
 {
   return std::string(
@@ -142,7 +165,7 @@ std::string usage()
          "  --json FILE             also write the figures and the machine as JSON (Hausdorff\n"
          "                          distances there are plain ratios to the diagonal, not x1e-3)\n"
          "  --help                  print this help\n" +
-         quality_usage();
+         corpus_usage() + quality_usage();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -505,8 +528,9 @@ void write_table(std::ostream& out, const std::vector<Mesh_result>& results, con
                          : "process peak resident memory (getrusage; /proc/self/clear_refs not writable)")
       << "\n";
   const std::optional<double> growth = linear_growth(results);
-  out << "linear growth: our time per vertex on " << large_mesh_name << " / on bear = "
-      << (growth ? fixed(*growth, 2) : std::string("n/a (needs ours on both meshes)")) << '\n';
+  if(has_large)
+    out << "linear growth: our time per vertex on " << large_mesh_name << " / on bear = "
+        << (growth ? fixed(*growth, 2) : std::string("n/a (needs ours on both meshes)")) << '\n';
   out << "machine: CPU " << machine.cpu << ", " << machine.hardware_threads << " hardware threads, "
       << machine.compiler << ", CGAL " << machine.cgal << ", CGAL_LINKED_WITH_TBB "
       << (machine.tbb ? "defined" : "not defined") << '\n';
@@ -631,6 +655,94 @@ bool parse_count(const std::string& text, std::size_t& value)
   std::exit(EXIT_FAILURE);
 }
 
+// The --corpus mode's files: those of `data_dir` in a format the tools read, by name.
+std::vector<std::string> corpus_files(const std::string& data_dir)
+{
+  std::vector<std::string> files;
+  for(const auto& entry : std::filesystem::directory_iterator(data_dir))
+  {
+    std::string ext = entry.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if(entry.is_regular_file() && (ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl"))
+      files.push_back(entry.path().filename().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// The ratios of the median times, ours over CGAL's: their median, 90th percentile (nearest rank)
+// and largest.
+void write_ratio_summary(std::ostream& out, const std::vector<Mesh_result>& results)
+{
+  std::vector<std::pair<double, std::string>> ratios;
+  for(const auto& r : results)
+    if(r.ours.done && r.cgal.done && r.cgal.median_seconds > 0)
+      ratios.emplace_back(r.ours.median_seconds / r.cgal.median_seconds, r.name);
+  if(ratios.empty())
+    return;
+  std::sort(ratios.begin(), ratios.end());
+  std::vector<double> values;
+  for(const auto& r : ratios)
+    values.push_back(r.first);
+  const std::size_t rank = std::size_t(std::ceil(0.9 * double(values.size())));
+  out << "time ratio, ours / CGAL, over " << values.size() << " meshes: median " << fixed(median(values), 1)
+      << ", 90th percentile " << fixed(values[rank - 1], 1) << ", largest " << fixed(values.back(), 1) << " ("
+      << ratios.back().second << ")\n";
+}
+
+// The --corpus mode: a row a mesh that reads and is small enough, then the ratios and the files
+// left out.
+int run_corpus_mode(const std::string& data_dir, std::size_t max_vertices, std::size_t repetitions,
+                    const std::string& json_file)
+{
+  if(!std::filesystem::is_directory(data_dir))
+    fail(data_dir + ": not a directory");
+  const Machine machine = describe_machine();
+  Peak_memory memory;
+  std::vector<Mesh_result> results;
+  std::vector<std::string> left_out;
+  for(const auto& file : corpus_files(data_dir))
+  {
+    std::cerr << file << ": reading ..." << std::flush;
+    Mesh_result row;
+    row.name = file;
+    row.repetitions = repetitions;
+    try
+    {
+      const Mesh input = tools::read_mesh(data_dir + "/" + file, true);
+      row.input_vertices = num_vertices(input);
+      std::cerr << ' ' << row.input_vertices << " vertices\n";
+      if(row.input_vertices > max_vertices)
+      {
+        left_out.push_back(file + ": " + std::to_string(row.input_vertices) + " vertices");
+        continue;
+      }
+      row.ours = run_method(file, "ours", input, repetitions, memory, run_ours);
+      row.cgal = run_method(file, "cgal", input, repetitions, memory, run_cgal);
+      results.push_back(std::move(row));
+    }
+    catch(const std::exception& e)
+    {
+      std::cerr << '\n';
+      const std::string what = e.what();
+      left_out.push_back(what.rfind(data_dir, 0) == 0 ? what.substr(data_dir.size() + 1) : file + ": " + what);
+    }
+  }
+  write_table(std::cout, results, memory, machine, repetitions, 0);
+  write_ratio_summary(std::cout, results);
+  std::cout << left_out.size() << " files left out (over " << max_vertices << " vertices, or refused):\n";
+  for(const auto& l : left_out)
+    std::cout << "  " << l << '\n';
+  if(!json_file.empty())
+  {
+    std::ofstream out(json_file);
+    write_json(out, results, memory, machine);
+    if(!out)
+      fail(json_file + ": cannot write");
+  }
+  return EXIT_SUCCESS;
+}
+
 // The --quality mode. The table goes out even when a mesh fails, with the rows done before it, so
 // that a long run is not lost to its last mesh; the exit status then says it failed.
 int run_quality_mode(const tools::Quality_options& options, const std::string& json_file)
@@ -687,7 +799,9 @@ int main(int argc, char** argv)
   bool skip_large = false, run_ours_method = true, run_cgal_method = true;
   std::string json_file;
   // The two modes take different mesh names, so --meshes is checked once the mode is known.
-  bool quality = false, no_resampling = false;
+  bool quality = false, no_resampling = false, corpus = false, repetitions_given = false,
+       max_vertices_given = false;
+  std::size_t max_vertices = corpus_max_vertices;
   std::optional<std::pair<double, double>> sharp_angle_bounds;
   std::optional<std::string> mesh_list, seed_list, length_factor_list;
   std::vector<std::string> timing_only; // options of the timing mode given, refused with --quality
@@ -708,6 +822,14 @@ int main(int argc, char** argv)
       data_dir = value();
     else if(arg == "--quality")
       quality = true;
+    else if(arg == "--corpus")
+      corpus = true;
+    else if(arg == "--max-vertices")
+    {
+      max_vertices_given = true;
+      if(!parse_count(value(), max_vertices))
+        fail(arg + " needs a positive whole number");
+    }
     else if(arg == "--seeds")
       seed_list = value();
     else if(arg == "--no-resampling")
@@ -727,6 +849,7 @@ int main(int argc, char** argv)
     {
       timing_only.push_back(arg);
       std::size_t& target = arg == "--repetitions" ? repetitions : large_repetitions;
+      repetitions_given = repetitions_given || arg == "--repetitions";
       if(!parse_count(value(), target))
         fail(arg + " needs a positive whole number");
     }
@@ -764,6 +887,15 @@ int main(int argc, char** argv)
   }
   if(mesh_list && split(*mesh_list).empty())
     fail("--meshes needs at least one mesh name");
+  if(corpus)
+  {
+    if(quality || mesh_list || !run_ours_method || !run_cgal_method || skip_large || seed_list || no_resampling ||
+       sharp_angle_bounds || length_factor_list)
+      fail("--corpus takes only --max-vertices, --repetitions, --data and --json");
+    return run_corpus_mode(data_dir, max_vertices, repetitions_given ? repetitions : 1, json_file);
+  }
+  if(max_vertices_given)
+    fail("--max-vertices applies to --corpus only");
   if(quality)
   {
     if(!timing_only.empty())
