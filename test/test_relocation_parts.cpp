@@ -1008,11 +1008,15 @@ TEST(Features, ChordDeviationAlongACrease)
       on_border = v;
   EXPECT_EQ(polylines.chord_deviation(crease(1), polylines.at_vertex(on_border), 100),
             std::numeric_limits<double>::infinity());
-  // The fold is at about 90 degrees, a strong crease (re-sampling holds its slides to the line
-  // tolerance); a border is not.
-  EXPECT_TRUE(polylines.is_strong_crease(crease(1)));
-  EXPECT_TRUE(polylines.is_strong_crease(middle));
-  EXPECT_FALSE(polylines.is_strong_crease(polylines.at_vertex(on_border)));
+  // The fold is at about 90 degrees, a strong crease: re-sampling holds its slides to the line
+  // tolerance; a border's too when asked.
+  EXPECT_TRUE(polylines.holds_turns(crease(1)));
+  EXPECT_TRUE(polylines.holds_turns(middle));
+  EXPECT_FALSE(polylines.holds_turns(polylines.at_vertex(on_border)));
+  GR::Feature_polylines<Work_mesh> with_borders = polylines;
+  with_borders.set_line_tolerance(0.1, true);
+  EXPECT_TRUE(with_borders.holds_turns(polylines.at_vertex(on_border)));
+  EXPECT_TRUE(with_borders.holds_turns(crease(1)));
 }
 
 // A fold along y = 3 whose dihedral fades from about 70 to 30 degrees along x. With bounds (20,
@@ -1046,6 +1050,18 @@ TEST(Features, FadingCreasesAreFollowed)
   }
   EXPECT_GE(fading, 3u);
   EXPECT_GE(weak, 2u);
+  // The line tolerance holds the crease's turns where it is strong (60 degrees or more) only.
+  const GR::Feature_polylines<Work_mesh> polylines(
+    m, followed, GR::classify_vertices(m, followed, std::vector<char>(m.number_of_vertices(), 0), 50));
+  std::size_t held = 0;
+  for(Work_mesh::Edge_index e : m.edges())
+    if(followed[std::size_t(e)])
+    {
+      const bool strong = GR::dihedral_angle(m, e) >= 60;
+      EXPECT_EQ(polylines.holds_turns({m.halfedge(e), 0.}), strong);
+      held += strong ? 1 : 0;
+    }
+  EXPECT_GE(held, 1u);
   // The crease runs straight: with no turn allowed, nothing is followed.
   std::vector<double> theta(m.number_of_edges());
   for(Work_mesh::Edge_index e : m.edges())

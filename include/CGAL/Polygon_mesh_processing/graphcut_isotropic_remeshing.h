@@ -18,6 +18,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -92,6 +93,10 @@ Remeshing_options remeshing_options(const NamedParameters& np, bool resample = f
   auto read = [&np](auto& field, auto tag) {
     field = parameters::choose_parameter(parameters::get_parameter(np, tag), field);
   };
+  read(options.resampling, GNP::resampling);
+  options.resampling = options.resampling || resample;
+  std::tie(options.number_of_iterations, options.number_of_greedy_iterations) =
+    options.default_iterations(options.resampling);
   read(options.number_of_iterations, internal_np::number_of_iterations);
   read(options.random_seed, internal_np::random_seed);
   read(options.weights.lambda_shape, GNP::lambda_shape);
@@ -103,8 +108,6 @@ Remeshing_options remeshing_options(const NamedParameters& np, bool resample = f
   read(options.smoothing_step, GNP::smoothing_step);
   read(options.do_connectivity_optimization, GNP::do_connectivity_optimization);
   read(options.connectivity_period, GNP::connectivity_period);
-  read(options.resampling, GNP::resampling);
-  options.resampling = options.resampling || resample;
   options.sharp_angle_bounds = options.default_sharp_angle_bounds(options.resampling, resample);
   read(options.sharp_angle_bounds, GNP::sharp_angle_bounds);
   read(options.operations.split, internal_np::do_split);
@@ -360,7 +363,7 @@ remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<Trian
  *                           phase (before the greedy phase when it is 0), so that the density is
  *                           reached whatever the count}
  *     \cgalParamType{`std::size_t`}
- *     \cgalParamDefault{`150`}
+ *     \cgalParamDefault{`75`; the paper's `150` without re-sampling}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{random_seed}
  *     \cgalParamDescription{the seed of the random candidates; the same input and seed give the
@@ -391,7 +394,7 @@ remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<Trian
  *   \cgalParamNBegin{graphcut_parameters::number_of_greedy_iterations}
  *     \cgalParamDescription{the number of iterations of the final greedy phase}
  *     \cgalParamType{`std::size_t`}
- *     \cgalParamDefault{`20`}
+ *     \cgalParamDefault{`10`; the paper's `20` without re-sampling}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{graphcut_parameters::sharp_angle_bounds}
  *     \cgalParamDescription{the dihedral angles theta_false and theta_true (degrees) of the

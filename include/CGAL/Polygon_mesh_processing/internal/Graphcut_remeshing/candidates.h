@@ -260,11 +260,11 @@ private:
   }
 
   // Whether v's feature edges stay within the polylines' line tolerance of their polyline with v
-  // at `l` (the point `c`), as its neighbours are now, where that is a strong crease: weaker lines
-  // slide freely, as the paper's, since the defaults keep only the strong creases' turns too.
+  // at `l` (the point `c`), as its neighbours are now, where that is a border or a strong crease:
+  // weaker lines slide freely, as the paper's.
   bool keeps_lines(Vertex v, const Location& l, const Vector_3d& c) const
   {
-    if(!std::isfinite(m_polylines.line_tolerance()) || !m_polylines.is_strong_crease(l))
+    if(!std::isfinite(m_polylines.line_tolerance()) || !m_polylines.holds_turns(l))
       return true;
     for(Halfedge h : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
       if(m_state.feature_edge[std::size_t(m_mesh.edge(h))])

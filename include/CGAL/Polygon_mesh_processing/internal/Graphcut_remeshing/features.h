@@ -394,16 +394,23 @@ public:
 
   // How far a line of the working mesh may leave its polyline (chord_deviation()) when its
   // vertices slide or go: infinite unless the connectivity stage re-samples the lines, where the
-  // turns of the strong creases are not corners.
+  // turns of the strong creases, and of the borders when `borders_too`, are not corners.
   double line_tolerance() const { return m_line_tolerance; }
-  void set_line_tolerance(double tolerance) { m_line_tolerance = tolerance; }
+  void set_line_tolerance(double tolerance, bool borders_too)
+  {
+    m_line_tolerance = tolerance;
+    m_borders_hold_turns = borders_too;
+  }
 
   bool is_feature(Halfedge h) const { return m_feature[std::size_t(m_mesh.edge(h))] != 0; }
 
-  // Whether the segment of a location is on a strong crease.
-  bool is_strong_crease(const Location& l) const
+  // Whether the segment of a location is on a line whose turns a sliding vertex may cut by no
+  // more than the line tolerance: a strong crease, or a border (where the surface ends) when the
+  // borders hold their turns.
+  bool holds_turns(const Location& l) const
   {
-    return dihedral_angle(m_mesh, m_mesh.edge(l.h)) >= strong_crease_angle;
+    const auto e = m_mesh.edge(l.h);
+    return m_mesh.is_border(e) ? m_borders_hold_turns : dihedral_angle(m_mesh, e) >= strong_crease_angle;
   }
 
   // The location of a reference vertex on a feature polyline.
@@ -559,6 +566,7 @@ private:
   const std::vector<char>& m_feature;
   const std::vector<Vertex_kind>& m_kind;
   double m_line_tolerance = std::numeric_limits<double>::infinity();
+  bool m_borders_hold_turns = false;
 };
 
 } // namespace Graphcut_remeshing

@@ -92,9 +92,10 @@ public:
     for(const auto& p : m_intersections.all_pairs())
       m_input_intersection_zones.push_back(box_around(m_mesh, p.first, p.second, m_input_mean_length));
     // With re-sampling the strong creases' turns are not corners: their lines keep near them as
-    // the surface does.
+    // the surface does, and so do the borders at the input's density. At a length asked for the
+    // borders slide freely: held to that tolerance, a coarse length's keep too many vertices.
     if(m_sizing.resamples())
-      m_polylines.set_line_tolerance(m_sizing.tolerance);
+      m_polylines.set_line_tolerance(m_sizing.tolerance, !m_sizing.target_asked_for);
     m_energy.compute_terms();
   }
 

@@ -31,8 +31,12 @@ struct Connectivity_operations
 struct Remeshing_options
 {
   Energy_weights weights;
-  std::size_t number_of_iterations = 150;
-  std::size_t number_of_greedy_iterations = 20;
+  // The iterations of both phases when the surface is re-sampled, where the first connectivity
+  // pass already shapes most triangles; `paper_iterations`, the paper's (section 4.1), without
+  // re-sampling (default_iterations()).
+  std::size_t number_of_iterations = 75;
+  std::size_t number_of_greedy_iterations = 10;
+  std::pair<std::size_t, std::size_t> paper_iterations{150, 20};
   double initial_temperature = 10;
   double cooling_factor = 0.95;
   double smoothing_step = 0.06; // gamma of section 2.3
@@ -75,6 +79,12 @@ struct Remeshing_options
   std::pair<double, double> default_sharp_angle_bounds(bool with_resampling, bool density_asked_for) const
   {
     return with_resampling && !density_asked_for ? sharp_angle_bounds : paper_sharp_angle_bounds;
+  }
+
+  // The iterations of the two phases when the user gives none.
+  std::pair<std::size_t, std::size_t> default_iterations(bool with_resampling) const
+  {
+    return with_resampling ? std::make_pair(number_of_iterations, number_of_greedy_iterations) : paper_iterations;
   }
 };
 
