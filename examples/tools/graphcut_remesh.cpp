@@ -66,9 +66,11 @@ std::string usage()
          "shown on stderr.\n"
          "\n"
       << "  --iterations N          non-greedy relocation iterations (default " << defaults.number_of_iterations
-      << "; with --no-resampling, the paper's " << defaults.paper_iterations.first << ")\n"
+      << ";\n                          with --no-resampling, --target-length or --target-vertices, the paper's "
+      << defaults.paper_iterations.first << ")\n"
       << "  --greedy-iterations N   final greedy iterations (default " << defaults.number_of_greedy_iterations
-      << "; with --no-resampling " << defaults.paper_iterations.second << ")\n"
+      << "; with\n                          --no-resampling, --target-length or --target-vertices "
+      << defaults.paper_iterations.second << ")\n"
       << "  --lambda-data X         weight of the data term, unit-box scale (default " << defaults.weights.lambda_data
       << ")\n"
       << "  --face-data-weight X    weight of the data term at triangle centroids, relative to\n"
@@ -329,7 +331,7 @@ int main(int argc, char** argv)
     const bool resamples = resampling || target_length || target_vertices;
     const std::pair<double, double> default_bounds =
       defaults.default_sharp_angle_bounds(resamples, target_length || target_vertices);
-    const std::pair<std::size_t, std::size_t> default_iterations = defaults.default_iterations(resamples);
+    const std::pair<std::size_t, std::size_t> default_iterations = defaults.default_iterations(resamples, target_length || target_vertices);
     const std::size_t relocation_iterations = iterations.value_or(default_iterations.first),
                       greedy = greedy_iterations.value_or(default_iterations.second);
     const auto parameters = GP::combine(

@@ -114,8 +114,8 @@ with tempfile.TemporaryDirectory() as tmp:
     check(len(help_options) >= 9, "--help lists %d options" % len(help_options))
     for name, text in help_options.items():
         check('default' in text, "--help gives no default for %s: %r" % (name, text))
-    for name, default in (('--seed', 'default 0'), ('--iterations', 'default 75; with --no-resampling, the paper\'s 150'),
-                          ('--greedy-iterations', 'default 10; with --no-resampling 20'), ('--json', 'default: no JSON'),
+    for name, default in (('--seed', 'default 0'), ('--iterations', 'default 75; with --no-resampling, --target-length or --target-vertices, the paper\'s 150'),
+                          ('--greedy-iterations', 'default 10; with --no-resampling, --target-length or --target-vertices 20'), ('--json', 'default: no JSON'),
                           ('--sharp-angle', 'default 20 50; with --no-resampling, --target-length or --target-vertices, the paper\'s 20 35'),
                           ('--no-resampling', 'default: re-sampling')):
         check(default in help_options.get(name, ''), "--help: %s should say %r" % (name, default))

@@ -96,7 +96,7 @@ Remeshing_options remeshing_options(const NamedParameters& np, bool resample = f
   read(options.resampling, GNP::resampling);
   options.resampling = options.resampling || resample;
   std::tie(options.number_of_iterations, options.number_of_greedy_iterations) =
-    options.default_iterations(options.resampling);
+    options.default_iterations(options.resampling, resample);
   read(options.number_of_iterations, internal_np::number_of_iterations);
   read(options.random_seed, internal_np::random_seed);
   read(options.weights.lambda_shape, GNP::lambda_shape);
@@ -363,7 +363,8 @@ remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<Trian
  *                           phase (before the greedy phase when it is 0), so that the density is
  *                           reached whatever the count}
  *     \cgalParamType{`std::size_t`}
- *     \cgalParamDefault{`75`; the paper's `150` without re-sampling}
+ *     \cgalParamDefault{`75`; the paper's `150` without re-sampling and in the call with a
+ *                       target length}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{random_seed}
  *     \cgalParamDescription{the seed of the random candidates; the same input and seed give the
@@ -394,7 +395,8 @@ remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<Trian
  *   \cgalParamNBegin{graphcut_parameters::number_of_greedy_iterations}
  *     \cgalParamDescription{the number of iterations of the final greedy phase}
  *     \cgalParamType{`std::size_t`}
- *     \cgalParamDefault{`10`; the paper's `20` without re-sampling}
+ *     \cgalParamDefault{`10`; the paper's `20` without re-sampling and in the call with a
+ *                       target length}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{graphcut_parameters::sharp_angle_bounds}
  *     \cgalParamDescription{the dihedral angles theta_false and theta_true (degrees) of the
