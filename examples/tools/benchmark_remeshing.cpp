@@ -655,6 +655,18 @@ bool parse_count(const std::string& text, std::size_t& value)
   std::exit(EXIT_FAILURE);
 }
 
+// The figures as JSON into `file`, unless it is empty.
+void write_json_file(const std::string& file, const std::vector<Mesh_result>& results, const Peak_memory& memory,
+                     const Machine& machine)
+{
+  if(file.empty())
+    return;
+  std::ofstream out(file);
+  write_json(out, results, memory, machine);
+  if(!out)
+    fail(file + ": cannot write");
+}
+
 // The --corpus mode's files: those of `data_dir` in a format the tools read, by name.
 std::vector<std::string> corpus_files(const std::string& data_dir)
 {
@@ -733,13 +745,7 @@ int run_corpus_mode(const std::string& data_dir, std::size_t max_vertices, std::
   std::cout << left_out.size() << " files left out (over " << max_vertices << " vertices, or refused):\n";
   for(const auto& l : left_out)
     std::cout << "  " << l << '\n';
-  if(!json_file.empty())
-  {
-    std::ofstream out(json_file);
-    write_json(out, results, memory, machine);
-    if(!out)
-      fail(json_file + ": cannot write");
-  }
+  write_json_file(json_file, results, memory, machine);
   return EXIT_SUCCESS;
 }
 
@@ -975,12 +981,6 @@ int main(int argc, char** argv)
   }
 
   write_table(std::cout, results, memory, machine, repetitions, large_repetitions);
-  if(!json_file.empty())
-  {
-    std::ofstream out(json_file);
-    write_json(out, results, memory, machine);
-    if(!out)
-      fail(json_file + ": cannot write");
-  }
+  write_json_file(json_file, results, memory, machine);
   return EXIT_SUCCESS;
 }
