@@ -20,6 +20,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/local_operations.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/relaxation.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/remeshing_options.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/smallest_angle_repair.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/vertex_splits.h>
 
 #include <cstddef>
@@ -100,6 +101,20 @@ public:
     Coverings coverings(m_local);
     counts.splits = coverings.cover_reference();
     counts.splits += coverings.cover_chords();
+    return counts;
+  }
+
+  // The triangles with the smallest angles, once the relocation is over (smallest_angle_repair.h):
+  // its flips and collapses count as such, its moves as relaxed vertices.
+  Connectivity_counts repair_smallest_angles()
+  {
+    const Connectivity_operations& op = m_operations;
+    const Smallest_angle_repair::Counts repaired =
+      Smallest_angle_repair(m_local, op.flip, op.collapse, op.relaxation_steps > 0).run();
+    Connectivity_counts counts;
+    counts.flips = repaired.flips;
+    counts.collapses = repaired.collapses;
+    counts.relaxed = repaired.moves;
     return counts;
   }
 

@@ -111,18 +111,34 @@ public:
     return plan;
   }
 
+  // Re-sampling: an edge shorter than its target allows is collapsed, the shortest for its target
+  // first, as best_collapse() says, when the new triangles are at most twice as thin as the old.
   Plan resampling_plan(Edge e) const
   {
+    const Halfedge h = m_mesh.halfedge(e);
+    const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
+    const double length = (position(a) - position(b)).norm(), target = edge_length_target(a, b);
+    if(!Sizing_field::is_too_short(length, target))
+      return Plan();
+    double smallest = -1;
     Plan plan;
+    if(!best_collapse(e, plan.collapse, smallest) || !(smallest >= 0.5 * smallest_angle_around(a, b)))
+      return Plan();
+    plan.gain = Sizing_field::shortfall(length, target);
+    return plan;
+  }
+
+  // The way to collapse e that keeps the best triangles, and the smallest angle of its triangles;
+  // false when e may not be collapsed (a constrained or frozen edge, a vertex that would lose too
+  // many edges, two feature edges merging, a link condition broken, no acceptable way).
+  bool best_collapse(Edge e, Collapse& best, double& smallest) const
+  {
     const char feature = m_state.feature_edge[std::size_t(e)];
     const Halfedge h = m_mesh.halfedge(e);
     const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
     if(feature == constrained_feature_edge || is_frozen(a) || is_frozen(b))
-      return Plan();
+      return false;
     const Vector_3d pa = position(a), pb = position(b);
-    const double length = (pa - pb).norm(), target = edge_length_target(a, b);
-    if(!Sizing_field::is_too_short(length, target))
-      return Plan();
     // When the user asked for a density: a free edge with one end on a feature line or fixed, the
     // free end goes to the other, which stays where it is. A coarse target needs these collapses
     // (without them the lines' neighbours hold their vertices); at the input's density they only
@@ -142,9 +158,9 @@ public:
         trials.push_back(*f);
     }
     else if(!(is_free(a) && is_free(b)))
-      return Plan();
+      return false;
     if(feature && trials.empty())
-      return Plan();
+      return false;
     // The triangles on e go; their far vertices keep three edges (two on a border, where one
     // triangle is enough, when the user asked for a density: a strip two triangles wide is made
     // of such vertices), and no two feature edges merge (the free end of a collapse into a line
@@ -160,31 +176,25 @@ public:
         const Vertex far = m_mesh.target(m_mesh.next(g));
         if(m_mesh.degree(far) < (m_sizing.into_lines && m_mesh.is_border(far) ? 3u : 4u) ||
            (!into_feature && wings > (m_sizing.into_lines && feature ? 1 : 0)))
-          return Plan();
+          return false;
       }
     if(!CGAL::Euler::does_satisfy_link_condition(e, m_mesh))
-      return Plan();
+      return false;
     if(trials.empty())
       // A free edge becomes its end or its midpoint on the reference.
       for(const Vector_3d& p : {pb, pa, project((pa + pb) / 2, a)})
         trials.push_back(Collapse{a, b, p});
-    const double old_min = smallest_angle_around(a, b);
-    // The way that keeps the best triangles; the new ones may be thinner than the old by half at
-    // most.
-    double best = -1;
+    smallest = -1;
     for(const Collapse& trial : trials)
     {
-      const double smallest = collapsed_smallest_angle(trial);
-      if(smallest > best)
+      const double s = collapsed_smallest_angle(trial);
+      if(s > smallest)
       {
-        best = smallest;
-        plan.collapse = trial;
+        smallest = s;
+        best = trial;
       }
     }
-    if(!(best >= 0.5 * old_min))
-      return Plan();
-    plan.gain = Sizing_field::shortfall(length, target);
-    return plan;
+    return smallest >= 0;
   }
 
 
@@ -235,6 +245,16 @@ public:
     return v;
   }
 
+  // Collapses e as c says; returns the kept vertex and its neighbours.
+  std::vector<Vertex> collapse_and_touch(Edge e, const Collapse& c)
+  {
+    const Vertex v = collapse(e, c);
+    std::vector<Vertex> touched{v};
+    for(Vertex w : vertices_around_target(m_mesh.halfedge(v), m_mesh))
+      touched.push_back(w);
+    return touched;
+  }
+
 private:
   std::vector<Vertex> flat_collapse(Edge e, const Vector_3d& p)
   {
@@ -247,15 +267,6 @@ private:
       touched.push_back(m_mesh.source(g));
       m_state.face_hint[std::size_t(m_mesh.face(g))] = m_state.vertex_hint[std::size_t(v)];
     }
-    return touched;
-  }
-
-  std::vector<Vertex> collapse_and_touch(Edge e, const Collapse& c)
-  {
-    const Vertex v = collapse(e, c);
-    std::vector<Vertex> touched{v};
-    for(Vertex w : vertices_around_target(m_mesh.halfedge(v), m_mesh))
-      touched.push_back(w);
     return touched;
   }
 

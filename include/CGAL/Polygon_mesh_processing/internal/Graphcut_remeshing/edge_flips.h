@@ -48,26 +48,15 @@ public:
     const Halfedge h = m_mesh.halfedge(e), o = m_mesh.opposite(h);
     const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
     const Vertex c = m_mesh.target(m_mesh.next(h)), d = m_mesh.target(m_mesh.next(o));
-    if(c == d || m_mesh.halfedge(c, d) != Work_mesh::null_halfedge())
-      return 0;
-    if(m_mesh.degree(a) < 4 || m_mesh.degree(b) < 4)
-      return 0;
     const int change = deviation_change(a, -1) + deviation_change(b, -1) + deviation_change(c, +1) +
                        deviation_change(d, +1);
     if(change > 0)
       return 0;
+    const double new_min = flipped_smallest_angle(e);
+    if(new_min < 0)
+      return 0;
     const Vector_3d pa = position(a), pb = position(b), pc = position(c), pd = position(d);
-    // (a, b, c) and (b, a, d) become (a, d, c) and (d, b, c).
-    const Vector_3d quad = area_vector(pa, pb, pc) + area_vector(pb, pa, pd);
-    if(!acceptable(pa, pd, pc, a, quad) || !acceptable(pd, pb, pc, b, quad))
-      return 0;
-    // The new edge must not leave the reference more than the old one did.
-    const double before = distance_to_reference((pa + pb) / 2, a);
-    const double after = distance_to_reference((pc + pd) / 2, c);
-    if(after > (std::max)(before, m_sizing.tolerance))
-      return 0;
     const double old_min = (std::min)(smallest_angle(pa, pb, pc), smallest_angle(pb, pa, pd));
-    const double new_min = (std::min)(smallest_angle(pa, pd, pc), smallest_angle(pd, pb, pc));
     // Section 3.1's smooth flip where the valence stays as regular: the six angles' minimum must
     // grow, by a margin so that rounding cannot make two flips undo each other. (The paper only
     // tries flips that make the valence more regular; around the corners of an organic mesh
@@ -82,11 +71,41 @@ public:
     return new_min - old_min;
   }
 
-private:
-  struct Plan
+  // The smallest angle of the two triangles that flipping the flippable edge e makes, or -1 when
+  // one of them is not acceptable or the new edge leaves the reference more than e did.
+  double flipped_smallest_angle(Edge e) const
   {
-    double gain;
-  };
+    const Halfedge h = m_mesh.halfedge(e), o = m_mesh.opposite(h);
+    const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
+    const Vertex c = m_mesh.target(m_mesh.next(h)), d = m_mesh.target(m_mesh.next(o));
+    const Vector_3d pa = position(a), pb = position(b), pc = position(c), pd = position(d);
+    // (a, b, c) and (b, a, d) become (a, d, c) and (d, b, c).
+    const Vector_3d quad = area_vector(pa, pb, pc) + area_vector(pb, pa, pd);
+    if(!acceptable(pa, pd, pc, a, quad) || !acceptable(pd, pb, pc, b, quad))
+      return -1;
+    // The new edge must not leave the reference more than the old one did.
+    const double before = distance_to_reference((pa + pb) / 2, a);
+    const double after = distance_to_reference((pc + pd) / 2, c);
+    if(after > (std::max)(before, m_sizing.tolerance))
+      return -1;
+    return (std::min)(smallest_angle(pa, pd, pc), smallest_angle(pd, pb, pc));
+  }
+
+  // Whether e may be flipped: off the features and the border, its vertices not frozen, its
+  // ends keeping three edges, the new edge not there already.
+  bool flippable(Edge e) const
+  {
+    if(m_state.feature_edge[std::size_t(e)] || m_mesh.is_border(e))
+      return false;
+    const Halfedge h = m_mesh.halfedge(e), o = m_mesh.opposite(h);
+    const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
+    const Vertex c = m_mesh.target(m_mesh.next(h)), d = m_mesh.target(m_mesh.next(o));
+    for(Vertex u : {a, b, c, d})
+      if(is_frozen(u))
+        return false;
+    return c != d && m_mesh.halfedge(c, d) == Work_mesh::null_halfedge() && m_mesh.degree(a) >= 4 &&
+           m_mesh.degree(b) >= 4;
+  }
 
   // Flips e; returns the vertices of its two triangles.
   std::vector<Vertex> flip(Edge e)
@@ -100,17 +119,11 @@ private:
     return touched;
   }
 
-  bool flippable(Edge e) const
+private:
+  struct Plan
   {
-    if(m_state.feature_edge[std::size_t(e)] || m_mesh.is_border(e))
-      return false;
-    const Halfedge h = m_mesh.halfedge(e);
-    for(Vertex u : {m_mesh.source(h), m_mesh.target(h), m_mesh.target(m_mesh.next(h)),
-                    m_mesh.target(m_mesh.next(m_mesh.opposite(h)))})
-      if(is_frozen(u))
-        return false;
-    return true;
-  }
+    double gain;
+  };
 };
 
 } // namespace Graphcut_remeshing

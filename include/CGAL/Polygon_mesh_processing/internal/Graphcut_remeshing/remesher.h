@@ -15,6 +15,7 @@
 //         vertex splits, relaxation            (connectivity.h, one file per operation)
 //   with a length coarser than the input's, twice: vertices where the reference stands out
 //   from the mesh, and where the mesh's edges stand out from the reference    (coverings.h)
+//   re-sampling at the input's density, the triangles with the smallest angles (smallest_angle_repair.h)
 //
 // The energy of eq. (1) is in energy.h, the reference surface and its frames in
 // reference_surface.h, the feature lines in features.h, the target edge length in sizing.h, the
@@ -151,6 +152,16 @@ public:
         m_energy.compute_terms();
         m_tracking.mark_all();
       }
+    // Beyond the paper: when re-sampling at the input's density, the triangles with the smallest
+    // angles last. At a length asked for, whose tolerance grows with the triangles, the pass cut
+    // coarse hollows and tips off (see the manual).
+    if(m_options.do_connectivity_optimization && m_sizing.resamples() && !m_sizing.target_asked_for)
+    {
+      m_cut.release();
+      safe_pass(stats, [](Connectivity_optimizer& optimizer) { return optimizer.repair_smallest_angles(); });
+      m_energy.compute_terms();
+      m_tracking.mark_all();
+    }
     return stats;
   }
 

@@ -1,0 +1,213 @@
+// Copyright (c) 2026 the Graphcut_remeshing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Beyond the paper: once the relocation is over, the triangles with a small angle are worked on,
+// worst first, by local operations that raise the smallest angle around them.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_SMALLEST_ANGLE_REPAIR_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_SMALLEST_ANGLE_REPAIR_H
+
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/edge_collapses.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/edge_flips.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/edge_queue.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/local_operations.h>
+
+#include <boost/container/small_vector.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace Graphcut_remeshing {
+
+// The triangles with an angle below `poor_angle`, worst first: a flip of one of their edges or a
+// collapse of one (as the re-sampling collapses do, along its line for a feature edge), whichever
+// leaves the larger smallest angle; then a move of their free vertices towards the centroid of
+// their neighbours or towards the apex that would make their worst triangle equilateral, in the
+// tangent plane and onto the reference. An operation is taken only when
+// it raises the smallest angle of the triangles it changes, so the worst triangle never gets
+// worse, and with the checks of its kind: acceptable triangles, no fold, within the sizing
+// tolerance of the reference. New self-intersections are the pass's to check
+// (Graphcut_remesher::safe_pass()).
+class Smallest_angle_repair : public Local_operations
+{
+public:
+  static constexpr double poor_angle = 30 * pi / 180;
+
+  Smallest_angle_repair(const Local_operations& operations, bool flip, bool collapse, bool move)
+    : Local_operations(operations), m_flip(flip), m_collapse(collapse), m_move(move)
+  {}
+
+  struct Counts
+  {
+    std::size_t flips = 0;
+    std::size_t collapses = 0;
+    std::size_t moves = 0;
+  };
+
+  Counts run()
+  {
+    Counts counts;
+    run_edge_queue(m_mesh, [this](Edge e) { return plan(e); },
+                   [this, &counts](Edge e, const Plan& p) {
+                     ++(p.flip ? counts.flips : counts.collapses);
+                     return p.flip ? Edge_flips(*this).flip(e) : Edge_collapses(*this).collapse_and_touch(e, p.collapse);
+                   });
+    if(m_move)
+      counts.moves = move_vertices();
+    return counts;
+  }
+
+private:
+  // The least growth of the smallest angle that counts (as for the flips).
+  static constexpr double margin = Edge_flips::min_angle_margin;
+
+  struct Plan
+  {
+    double gain = 0; // pi less the smallest angle of e's triangles: the worst first
+    bool flip = false;
+    Collapse collapse;
+  };
+
+  // The operation on e, a side of a triangle with a small angle, that leaves the larger smallest
+  // angle, if it raises the smallest angle of the triangles it changes.
+  Plan plan(Edge e) const
+  {
+    const double on_e = smallest_angle_on(e);
+    if(!(on_e < poor_angle))
+      return Plan();
+    Plan p;
+    double best = -1;
+    if(m_flip && Edge_flips(*this).flippable(e))
+    {
+      const double flipped = Edge_flips(*this).flipped_smallest_angle(e);
+      if(flipped > on_e + margin)
+      {
+        best = flipped;
+        p.flip = true;
+      }
+    }
+    Collapse c;
+    double collapsed = -1;
+    const Halfedge h = m_mesh.halfedge(e);
+    if(m_collapse && Edge_collapses(*this).best_collapse(e, c, collapsed) && collapsed > best &&
+       collapsed > smallest_angle_around(m_mesh.source(h), m_mesh.target(h)) + margin)
+    {
+      best = collapsed;
+      p.flip = false;
+      p.collapse = c;
+    }
+    if(best < 0)
+      return Plan();
+    p.gain = pi - on_e;
+    return p;
+  }
+
+  // The smallest angle of the triangles on e.
+  double smallest_angle_on(Edge e) const
+  {
+    double smallest = pi;
+    for(Halfedge g : {m_mesh.halfedge(e), m_mesh.opposite(m_mesh.halfedge(e))})
+      if(!m_mesh.is_border(g))
+        smallest = (std::min)(smallest, smallest_angle(position(m_mesh.source(g)), position(m_mesh.target(g)),
+                                                       position(m_mesh.target(m_mesh.next(g)))));
+    return smallest;
+  }
+
+  // The free vertices with a small angle around them, worst first, each moved once when that pays.
+  std::size_t move_vertices()
+  {
+    std::vector<std::pair<double, Vertex> > worst;
+    for(Vertex v : m_mesh.vertices())
+      if(is_free(v))
+      {
+        const double s = smallest_angle_around(v, v);
+        if(s < poor_angle)
+          worst.emplace_back(s, v);
+      }
+    std::sort(worst.begin(), worst.end());
+    std::size_t moved = 0;
+    for(const auto& w : worst)
+      moved += move_vertex(w.second) ? 1 : 0;
+    return moved;
+  }
+
+  // v towards the centroid of its neighbours or the apex of the equilateral triangle on the far side
+  // of its worst triangle, all the way or half of it, in its tangent plane and then onto the
+  // reference: the one that raises the smallest angle around v most, if one does.
+  bool move_vertex(Vertex v)
+  {
+    const Vector_3d x = position(v);
+    boost::container::small_vector<Halfedge, 16> link; // on each triangle, the side facing v
+    Vector_3d centroid(0, 0, 0);
+    for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+    {
+      if(m_mesh.is_border(g))
+        return false;
+      link.push_back(m_mesh.prev(g));
+      centroid += position(m_mesh.source(g));
+    }
+    centroid /= double(link.size());
+    // The apex of the equilateral triangle on the side facing v of v's worst triangle.
+    Halfedge worst = link.front();
+    for(Halfedge g : link)
+      if(smallest_angle(position(m_mesh.source(g)), position(m_mesh.target(g)), x) <
+         smallest_angle(position(m_mesh.source(worst)), position(m_mesh.target(worst)), x))
+        worst = g;
+    const Vector_3d a = position(m_mesh.source(worst)), b = position(m_mesh.target(worst));
+    const Vector_3d side = b - a, up = area_vector(a, b, x);
+    const Vector_3d apex = (a + b) / 2 + (std::sqrt(3.0) / 2) * side.norm() * up.cross(side).normalized();
+    const Vector_3d normal = m_reference.frame(m_state.closest[std::size_t(v)]).normal;
+    double best = smallest_angle_around(v, v) + margin;
+    std::size_t poor = 0; // v's triangles below poor_angle: a move may not make more
+    for(Halfedge g : link)
+      poor += smallest_angle(position(m_mesh.source(g)), position(m_mesh.target(g)), x) < poor_angle ? 1 : 0;
+    Vector_3d best_y = x;
+    for(const Vector_3d& target : {centroid, Vector_3d((x + centroid) / 2), apex, Vector_3d((x + apex) / 2)})
+    {
+      Face hint = m_state.vertex_hint[std::size_t(v)];
+      const Vector_3d y = m_reference.closest_point(x + tangential(target - x, normal), hint);
+      double smallest = pi;
+      std::size_t poor_after = 0;
+      for(Halfedge g : link)
+      {
+        const Vector_3d p = position(m_mesh.source(g)), q = position(m_mesh.target(g));
+        if(!is_acceptable_triangle(p, q, y, area_vector(p, q, x), min_turn_cosine) ||
+           !is_acceptable_triangle(p, q, y, m_reference.normal(hint)) ||
+           distance_to_reference((p + q + y) / 3, v) > m_sizing.tolerance)
+        {
+          smallest = -1;
+          break;
+        }
+        const double s = smallest_angle(p, q, y);
+        smallest = (std::min)(smallest, s);
+        poor_after += s < poor_angle ? 1 : 0;
+      }
+      if(smallest > best && poor_after <= poor && fan_unfolded(link, y, {v}))
+      {
+        best = smallest;
+        best_y = y;
+      }
+    }
+    if(best_y == x)
+      return false;
+    m_mesh.point(v) = Work_kernel::Point_3(best_y.x(), best_y.y(), best_y.z());
+    bind_new_vertex(v, v);
+    track_faces_from(v);
+    return true;
+  }
+
+  bool m_flip, m_collapse, m_move;
+};
+
+} // namespace Graphcut_remeshing
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_SMALLEST_ANGLE_REPAIR_H
