@@ -493,7 +493,7 @@ TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)
   {
     const double mean = GR::mean_edge_length(*m);
     const GR::Sizing_field sizing = GR::curvature_sizing(*m, Pass_setup::features_of(*m, true), mean, 35,
-                                                   GR::longest_to_mean_length);
+                                                   GR::longest_to_mean_length, GR::gradation_at_mean_length);
     ASSERT_TRUE(sizing.resamples());
     const std::vector<double> area = GR::vertex_areas(*m);
     double budget = 0, spent = 0;
@@ -511,8 +511,10 @@ TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)
         EXPECT_NEAR(sizing.target[std::size_t(v)], mean, 0.1 * mean);
     }
   }
+  // The steeper grading of a length asked for: the gentle one of the mean length spreads the short
+  // edges over most of this small sheet.
   const GR::Sizing_field sizing = GR::curvature_sizing(bent, Pass_setup::features_of(bent, true), GR::mean_edge_length(bent),
-                                                 35, GR::longest_to_mean_length);
+                                                 35, GR::longest_to_mean_length, GR::sizing_gradation);
   double flat = 0, curved = 0;
   for(auto v : bent.vertices())
   {
@@ -535,7 +537,7 @@ TEST(Connectivity_pass, ResamplingBringsTheEdgesToTheirTargets)
       Pass_setup s(input.mesh);
       const double mean = GR::mean_edge_length(s.reference_mesh);
       s.sizing = GR::curvature_sizing(s.reference_mesh, s.reference_feature_edge, factor * mean, 35,
-                                      GR::longest_to_mean_length);
+                                      GR::longest_to_mean_length, GR::gradation_at_mean_length);
       const std::string name = input.name + " x" + std::to_string(factor);
       for(int pass = 0; pass < 4; ++pass)
       {
@@ -1048,7 +1050,7 @@ TEST(Connectivity_pass, ResamplingRelaxationKeepsTheTrianglesWithinTheTolerance)
   {
     Pass_setup s(*input);
     s.sizing = GR::curvature_sizing(s.reference_mesh, s.reference_feature_edge, GR::mean_edge_length(s.reference_mesh), 35,
-                                    GR::longest_to_mean_length);
+                                    GR::longest_to_mean_length, GR::gradation_at_mean_length);
     const Work start = s.mesh;
     const std::size_t moved = GR::Relaxation(s.operations_with_features(), [&start](Work::Vertex_index u, const GR::Vector_3d& x, double) {
       return (x - GR::to_vector(start.point(u))).squaredNorm();

@@ -206,8 +206,14 @@ inline void grade_sizing(const Work_mesh& m, double gradation, std::vector<doubl
 // input's vertices, and nothing is covered (Sizing_field::covers_reference).
 constexpr double covering_length_ratio = Sizing_field::too_long_ratio;
 
-// Neighbouring target lengths differ by at most this times the distance between them.
+// Neighbouring target lengths differ by at most this times the distance between them: in the
+// field of an error bound (tolerance_sizing()) and in the count-matched field at a length asked
+// for, where the curved parts keep their short edges as the triangles coarsen.
 constexpr double sizing_gradation = 0.5;
+// The same in the count-matched field at the input's own density, gentler: each change of size
+// takes vertices of valence 5 and 7 (fandisk's irregular vertices, the manual's re-sampling
+// section), and the distance to the input has room there.
+constexpr double gradation_at_mean_length = 0.05;
 
 // The longest edges of the count-matched field (curvature_sizing()), in target lengths: at the
 // input's own density, twice its mean edge length in the flat parts; with a length asked for,
@@ -244,7 +250,7 @@ inline Sizing_field tolerance_sizing(const Work_mesh& m, const std::vector<char>
 // triangles as the mean length would everywhere (sum of area / l^2), so that the vertex count
 // stays the input's while the curved parts get the short edges and the flat parts the long ones.
 inline Sizing_field curvature_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double mean_length,
-                               double corner_angle, double longest)
+                               double corner_angle, double longest, double gradation)
 {
   const std::vector<double> radius = smooth_edge_radii(m, feature_edge, corner_angle);
   const std::vector<double> area = vertex_areas(m);
@@ -277,7 +283,7 @@ inline Sizing_field curvature_sizing(const Work_mesh& m, const std::vector<char>
   // leave the input.
   sizing.tolerance = std::exp(high);
   fill(sizing.tolerance);
-  grade_sizing(m, sizing_gradation, sizing.target);
+  grade_sizing(m, gradation, sizing.target);
   // Grading only shortens: scale the field back to the budget.
   double count = 0;
   for(Work_mesh::Vertex_index v : m.vertices())
@@ -307,10 +313,13 @@ inline Sizing_field make_sizing_field(const Work_mesh& reference, const std::vec
   }
   if(options.resampling)
   {
-    const double longest = options.target_edge_length > 0 ? longest_to_asked_target : longest_to_mean_length;
-    Sizing_field sizing = curvature_sizing(reference, feature_edge, length, options.sharp_angle_bounds.second, longest);
-    sizing.target_asked_for = sizing.into_lines = options.target_edge_length > 0;
-    sizing.covers_reference = sizing.target_asked_for && length >= covering_length_ratio * input_mean_length;
+    const bool asked = options.target_edge_length > 0;
+    Sizing_field sizing =
+      curvature_sizing(reference, feature_edge, length, options.sharp_angle_bounds.second,
+                       asked ? longest_to_asked_target : longest_to_mean_length,
+                       asked ? sizing_gradation : gradation_at_mean_length);
+    sizing.target_asked_for = sizing.into_lines = asked;
+    sizing.covers_reference = asked && length >= covering_length_ratio * input_mean_length;
     return sizing;
   }
   Sizing_field sizing;
