@@ -589,7 +589,7 @@ TEST(GraphcutRemeshingRobustness, FandiskAtAnyScaleAndPlace)
   Mesh reference = input;
   PMP::graphcut_isotropic_remeshing(reference, np);
   const double angle = PMP::mesh_quality_report(reference).mean_min_angle;
-  const double hausdorff = PMP::relative_surface_distance(input, reference).hausdorff;
+  const PMP::Relative_surface_distance distance = PMP::relative_surface_distance(input, reference);
 
   using Transformation = CGAL::Aff_transformation_3<Kernel>;
   const std::vector<std::pair<std::string, Transformation> > moves = {
@@ -603,11 +603,14 @@ TEST(GraphcutRemeshingRobustness, FandiskAtAnyScaleAndPlace)
     const Mesh moved_input = moved;
     PMP::graphcut_isotropic_remeshing(moved, np);
     const double a = PMP::mesh_quality_report(moved).mean_min_angle;
-    const double h = PMP::relative_surface_distance(moved_input, moved).hausdorff;
-    std::cout << move.first << ": mean min angle " << a << " (in place " << angle << "), Hausdorff " << h
-              << " (in place " << hausdorff << ")\n";
+    const PMP::Relative_surface_distance d = PMP::relative_surface_distance(moved_input, moved);
+    std::cout << move.first << ": mean min angle " << a << " (in place " << angle << "), Hausdorff " << d.hausdorff
+              << " (in place " << distance.hausdorff << "), RMS " << d.rms << " (in place " << distance.rms << ")\n";
     EXPECT_NEAR(a, angle, 0.5) << move.first;
-    EXPECT_NEAR(h, hausdorff, 0.25 * hausdorff) << move.first;
+    // The RMS distance says how close the whole surface stays; the Hausdorff distance is one
+    // point's, and the rounding of another scale or place moves it more from run to run.
+    EXPECT_NEAR(d.rms, distance.rms, 0.1 * distance.rms) << move.first;
+    EXPECT_LE(d.hausdorff, 1.5 * distance.hausdorff) << move.first;
     expect_guarantees(moved_input, moved, move.first);
   }
 }
