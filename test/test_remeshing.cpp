@@ -366,7 +366,7 @@ Mesh resampled(const Mesh& input, unsigned seed)
 // lines within the sizing tolerance of the input's (the strong creases' turns are no corners
 // there): every point of an input edge of 45 degrees or more within 0.1e-3 of the diagonal of an
 // output edge of 25 degrees or more, at seeds 0 and 1; and a mean minimum angle 2 degrees above
-// isotropic_remeshing's (49.35).
+// isotropic_remeshing's on fandisk.
 TEST(GraphcutRemeshing, ResamplingKeepsFandisksSharpLines)
 {
 #ifdef GRAPHCUT_REMESHING_SANITIZE
