@@ -51,7 +51,8 @@ public:
   {
     if(m_sizing.resamples())
       return run_edge_queue(m_mesh, [this](Edge e) { return resampling_plan(e); },
-                            [this](Edge e, const Plan& plan) { return collapse_and_touch(e, plan.collapse); });
+                            [this](Edge e, const Plan& plan) { return collapse_and_touch(e, plan.collapse); },
+                            [this](Edge e) { return resampling_gain_bound(e); });
     return run_edge_queue(m_mesh, [this](Edge e) { return flat_plan(e); },
                           [this](Edge e, const Plan& plan) { return flat_collapse(e, plan.collapse.point); });
   }
@@ -115,23 +116,32 @@ public:
   // first, as best_collapse() says, when the new triangles are at most twice as thin as the old.
   Plan resampling_plan(Edge e) const
   {
+    const double gain = resampling_gain_bound(e);
+    if(!(gain > 0))
+      return Plan();
+    const Halfedge h = m_mesh.halfedge(e);
+    double smallest = -1;
+    Plan plan;
+    if(!best_collapse(e, plan.collapse, smallest, 0.5 * smallest_angle_around(m_mesh.source(h), m_mesh.target(h))))
+      return Plan();
+    plan.gain = gain;
+    return plan;
+  }
+
+  // The gain resampling_plan(e) has when e may be collapsed, from its length alone.
+  double resampling_gain_bound(Edge e) const
+  {
     const Halfedge h = m_mesh.halfedge(e);
     const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
     const double length = (position(a) - position(b)).norm(), target = edge_length_target(a, b);
-    if(!Sizing_field::is_too_short(length, target))
-      return Plan();
-    double smallest = -1;
-    Plan plan;
-    if(!best_collapse(e, plan.collapse, smallest) || !(smallest >= 0.5 * smallest_angle_around(a, b)))
-      return Plan();
-    plan.gain = Sizing_field::shortfall(length, target);
-    return plan;
+    return Sizing_field::is_too_short(length, target) ? Sizing_field::shortfall(length, target) : 0.;
   }
 
   // The way to collapse e that keeps the best triangles, and the smallest angle of its triangles;
   // false when e may not be collapsed (a constrained or frozen edge, a vertex that would lose too
-  // many edges, two feature edges merging, a link condition broken, no acceptable way).
-  bool best_collapse(Edge e, Collapse& best, double& smallest) const
+  // many edges, two feature edges merging, a link condition broken, no acceptable way with no
+  // angle below `least_angle`).
+  bool best_collapse(Edge e, Collapse& best, double& smallest, double least_angle) const
   {
     const char feature = m_state.feature_edge[std::size_t(e)];
     const Halfedge h = m_mesh.halfedge(e);
@@ -187,7 +197,7 @@ public:
     smallest = -1;
     for(const Collapse& trial : trials)
     {
-      const double s = collapsed_smallest_angle(trial);
+      const double s = collapsed_smallest_angle(trial, least_angle);
       if(s > smallest)
       {
         smallest = s;
@@ -271,18 +281,24 @@ private:
   }
 
   // The smallest angle of the triangles around c.removed and c.kept that stay, with both at
-  // c.point, or -1 when one of them is not acceptable, leaves the reference by more than the
-  // tolerance or has an edge longer than 4/3 of its target (a split would undo the collapse).
-  // When the user asked for a length (whose tolerance grows with the triangles, see
-  // m_sizing.tolerance_for()), the removed vertex, and the kept one where it was when it moves, must also
-  // stay within the tolerance of one of the new triangles: their centroids alone may keep near
-  // the surface while a tip or a rim between them is cut off.
-  double collapsed_smallest_angle(const Collapse& c) const
+  // c.point, or -1 when one of them has an angle below `least_angle` (no use to the caller), is not
+  // acceptable, leaves the reference by more than the tolerance or has an edge longer than 4/3 of
+  // its target (a split would undo the collapse). When the user asked for a length (whose
+  // tolerance grows with the triangles, see m_sizing.tolerance_for()), the removed vertex, and the
+  // kept one where it was when it moves, must also stay within the tolerance of one of the new
+  // triangles: their centroids alone may keep near the surface while a tip or a rim between them
+  // is cut off. The tests on the triangles alone come first, those that search the reference last.
+  double collapsed_smallest_angle(const Collapse& c, double least_angle) const
   {
-    double smallest = pi;
-    const Vector_3d gone = position(c.removed), was = position(c.kept);
-    bool gone_covered = !m_sizing.target_asked_for, was_covered = !m_sizing.target_asked_for || was == c.point;
+    struct New_triangle
+    {
+      Vertex around;
+      Vector_3d p, q;
+      double allowed;
+    };
+    boost::container::small_vector<New_triangle, 16> fan;
     boost::container::small_vector<Halfedge, 16> link;
+    double smallest = pi;
     for(Vertex u : {c.removed, c.kept})
       for(Halfedge g : halfedges_around_target(m_mesh.halfedge(u), m_mesh))
       {
@@ -295,16 +311,33 @@ private:
         const Vector_3d pp = position(p), pq = position(q);
         const double target = edge_length_target(c.kept, p);
         const double longest = (std::max)({(c.point - pp).norm(), (c.point - pq).norm(), (pp - pq).norm()});
-        const double allowed = m_sizing.tolerance_for(longest, target);
-        if(Sizing_field::is_too_long((c.point - pp).norm(), target) || !acceptable(c.point, pq, pp, u, area_vector(position(u), pq, pp)) ||
-           distance_to_reference((c.point + pp + pq) / 3, c.kept) > allowed)
+        const double angle = smallest_angle(c.point, pq, pp);
+        if(angle < least_angle || Sizing_field::is_too_long((c.point - pp).norm(), target) ||
+           !is_acceptable_triangle(c.point, pq, pp, area_vector(position(u), pq, pp), min_turn_cosine))
           return -1;
-        smallest = (std::min)(smallest, smallest_angle(c.point, pq, pp));
-        std::array<double, 3> barycentric;
-        gone_covered = gone_covered || (gone - closest_point_on_triangle(gone, c.point, pq, pp, barycentric)).norm() <= allowed;
-        was_covered = was_covered || (was - closest_point_on_triangle(was, c.point, pq, pp, barycentric)).norm() <= allowed;
+        smallest = (std::min)(smallest, angle);
+        fan.push_back(New_triangle{u, pp, pq, m_sizing.tolerance_for(longest, target)});
       }
-    return gone_covered && was_covered && fan_unfolded(link, c.point, {c.removed, c.kept}) ? smallest : -1;
+    if(!fan_unfolded(link, c.point, {c.removed, c.kept}))
+      return -1;
+    const Vector_3d gone = position(c.removed), was = position(c.kept);
+    bool gone_covered = !m_sizing.target_asked_for, was_covered = !m_sizing.target_asked_for || was == c.point;
+    for(const New_triangle& t : fan)
+    {
+      // Turned over or not, by the reference around the triangle's own vertex; its distance, from
+      // the kept vertex's (the same search when that is the vertex).
+      double centroid_distance;
+      if(!faces_reference(c.point, t.q, t.p, t.around, centroid_distance))
+        return -1;
+      if(t.around != c.kept)
+        centroid_distance = distance_to_reference((c.point + t.q + t.p) / 3, c.kept);
+      if(centroid_distance > t.allowed)
+        return -1;
+      std::array<double, 3> barycentric;
+      gone_covered = gone_covered || (gone - closest_point_on_triangle(gone, c.point, t.q, t.p, barycentric)).norm() <= t.allowed;
+      was_covered = was_covered || (was - closest_point_on_triangle(was, c.point, t.q, t.p, barycentric)).norm() <= t.allowed;
+    }
+    return gone_covered && was_covered ? smallest : -1;
   }
 };
 

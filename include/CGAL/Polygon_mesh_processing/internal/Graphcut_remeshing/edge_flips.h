@@ -41,6 +41,7 @@ public:
   }
 
   // The gain in smallest angle of flipping e, or a non-positive value when e may not be flipped.
+  // The angles first: the reference is searched only for a flip that would pay.
   double flip_gain(Edge e) const
   {
     if(!flippable(e))
@@ -52,28 +53,41 @@ public:
                        deviation_change(d, +1);
     if(change > 0)
       return 0;
-    const double new_min = flipped_smallest_angle(e);
-    if(new_min < 0)
-      return 0;
     const Vector_3d pa = position(a), pb = position(b), pc = position(c), pd = position(d);
+    const double new_min = (std::min)(smallest_angle(pa, pd, pc), smallest_angle(pd, pb, pc));
     const double old_min = (std::min)(smallest_angle(pa, pb, pc), smallest_angle(pb, pa, pd));
+    double gain = new_min - old_min;
     // Section 3.1's smooth flip where the valence stays as regular: the six angles' minimum must
     // grow, by a margin so that rounding cannot make two flips undo each other. (The paper only
     // tries flips that make the valence more regular; around the corners of an organic mesh
     // those are rare and its triangles would stay thin.)
     if(change == 0)
-      return new_min - old_min - min_angle_margin;
+      gain -= min_angle_margin;
     // Beyond the paper: a flip that makes the valence more regular is also kept when its
     // triangles stay well shaped; the relocation then improves them (the min-angle rule alone
     // leaves most irregular vertices).
-    if(new_min >= flip_angle_floor)
-      return (std::max)(new_min - old_min, 0.0) + 1e-3 * (new_min - flip_angle_floor + 1e-9);
-    return new_min - old_min;
+    else if(new_min >= flip_angle_floor)
+      gain = (std::max)(gain, 0.0) + 1e-3 * (new_min - flip_angle_floor + 1e-9);
+    if(!(gain > 0))
+      return gain;
+    return flip_keeps_to_reference(e) ? gain : 0;
   }
 
   // The smallest angle of the two triangles that flipping the flippable edge e makes, or -1 when
-  // one of them is not acceptable or the new edge leaves the reference more than e did.
+  // flip_keeps_to_reference(e) is false.
   double flipped_smallest_angle(Edge e) const
+  {
+    if(!flip_keeps_to_reference(e))
+      return -1;
+    const Halfedge h = m_mesh.halfedge(e), o = m_mesh.opposite(h);
+    const Vector_3d pa = position(m_mesh.source(h)), pb = position(m_mesh.target(h));
+    const Vector_3d pc = position(m_mesh.target(m_mesh.next(h))), pd = position(m_mesh.target(m_mesh.next(o)));
+    return (std::min)(smallest_angle(pa, pd, pc), smallest_angle(pd, pb, pc));
+  }
+
+  // Whether both triangles that flipping the flippable edge e makes are acceptable and the new
+  // edge leaves the reference no more than e did.
+  bool flip_keeps_to_reference(Edge e) const
   {
     const Halfedge h = m_mesh.halfedge(e), o = m_mesh.opposite(h);
     const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
@@ -82,13 +96,10 @@ public:
     // (a, b, c) and (b, a, d) become (a, d, c) and (d, b, c).
     const Vector_3d quad = area_vector(pa, pb, pc) + area_vector(pb, pa, pd);
     if(!acceptable(pa, pd, pc, a, quad) || !acceptable(pd, pb, pc, b, quad))
-      return -1;
-    // The new edge must not leave the reference more than the old one did.
+      return false;
     const double before = distance_to_reference((pa + pb) / 2, a);
     const double after = distance_to_reference((pc + pd) / 2, c);
-    if(after > (std::max)(before, m_sizing.tolerance))
-      return -1;
-    return (std::min)(smallest_angle(pa, pd, pc), smallest_angle(pd, pb, pc));
+    return !(after > (std::max)(before, m_sizing.tolerance));
   }
 
   // Whether e may be flipped: off the features and the border, its vertices not frozen, its

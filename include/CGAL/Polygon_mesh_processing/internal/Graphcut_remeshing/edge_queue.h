@@ -23,10 +23,11 @@ namespace Graphcut_remeshing {
 // returns a plan with its `gain` (non-positive: nothing to do) and what `apply(e, plan)` needs;
 // it is called on every edge in parallel first, then again on the top entry just before `apply`
 // (an operation may have changed the valence of a vertex opposite the edge): an entry is stale
-// once its edge has been pushed again. `apply` returns the vertices whose edges are planned
-// again. Returns the number of operations applied.
-template <typename Plan_of, typename Apply>
-std::size_t run_edge_queue(Work_mesh& mesh, const Plan_of& plan_of, const Apply& apply)
+// once its edge has been pushed again. `apply` returns the vertices whose edges are queued
+// again, by `estimate(e)`, a bound on plan_of(e).gain that costs less: an edge touched by several
+// operations is planned once, when it comes to the top. Returns the number of operations applied.
+template <typename Plan_of, typename Apply, typename Estimate>
+std::size_t run_edge_queue(Work_mesh& mesh, const Plan_of& plan_of, const Apply& apply, const Estimate& estimate)
 {
   using Edge = Work_mesh::Edge_index;
   struct Entry
@@ -79,9 +80,16 @@ std::size_t run_edge_queue(Work_mesh& mesh, const Plan_of& plan_of, const Apply&
     std::sort(again.begin(), again.end());
     again.erase(std::unique(again.begin(), again.end()), again.end());
     for(Edge e : again)
-      push_gain(e, plan_of(e).gain);
+      push_gain(e, estimate(e));
   }
   return applied;
+}
+
+// The same, the edges queued again by their plan's gain.
+template <typename Plan_of, typename Apply>
+std::size_t run_edge_queue(Work_mesh& mesh, const Plan_of& plan_of, const Apply& apply)
+{
+  return run_edge_queue(mesh, plan_of, apply, [&plan_of](Work_mesh::Edge_index e) { return plan_of(e).gain; });
 }
 
 } // namespace Graphcut_remeshing

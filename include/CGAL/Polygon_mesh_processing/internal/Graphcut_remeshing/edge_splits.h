@@ -58,8 +58,20 @@ public:
   // The splits, best gain first; returns how many were made.
   std::size_t run()
   {
-    return run_edge_queue(m_mesh, [this](Edge e) { return plan_of(e); },
-                          [this](Edge e, const Plan& plan) { return split(e, plan); });
+    const auto plan = [this](Edge e) { return plan_of(e); };
+    const auto apply = [this](Edge e, const Plan& p) { return split(e, p); };
+    if(m_sizing.resamples())
+      return run_edge_queue(m_mesh, plan, apply, [this](Edge e) { return resampling_gain_bound(e); });
+    return run_edge_queue(m_mesh, plan, apply);
+  }
+
+  // The gain plan_of(e) has with re-sampling when e may be split, from its length alone.
+  double resampling_gain_bound(Edge e) const
+  {
+    const Halfedge h = face_side(e);
+    const Vertex a = m_mesh.source(h), b = m_mesh.target(h);
+    const double length = (position(a) - position(b)).norm(), target = edge_length_target(a, b);
+    return Sizing_field::is_too_long(length, target) ? Sizing_field::excess(length, target) : 0.;
   }
 
   Plan plan_of(Edge e) const
@@ -92,16 +104,12 @@ public:
     else
       plan.point = project((pa + pb) / 2, a);
     const Vector_3d& p = plan.point;
-    const Vector_3d abc = area_vector(pa, pb, pc), bad = area_vector(pb, pa, pd);
-    if(!acceptable(pa, p, pc, a, abc) || !acceptable(p, pb, pc, b, abc) ||
-       (two_faces && (!acceptable(pb, p, pd, b, bad) || !acceptable(p, pa, pd, a, bad))))
-      return Plan();
     if(m_sizing.resamples())
     {
       // Re-sampling: the longest edges first, relative to their target. The surface may bend
       // the midpoint far from the chord (next to a crease it lands on the crease, and splitting
       // would never shorten the edge), and the new triangles may not be much thinner than the
-      // ones they cut.
+      // ones they cut. These tests first: those of acceptable() search the reference.
       if(!feature && !((p - (pa + pb) / 2).norm() <= length / 4))
         return Plan();
       double old_min = smallest_angle(pa, pb, pc), new_min = (std::min)(smallest_angle(pa, p, pc), smallest_angle(p, pb, pc));
@@ -113,8 +121,13 @@ public:
       if(!(new_min >= 0.5 * old_min))
         return Plan();
       plan.gain = Sizing_field::excess(length, edge_length_target(a, b));
-      return plan;
     }
+    const Vector_3d abc = area_vector(pa, pb, pc), bad = area_vector(pb, pa, pd);
+    if(!acceptable(pa, p, pc, a, abc) || !acceptable(p, pb, pc, b, abc) ||
+       (two_faces && (!acceptable(pb, p, pd, b, bad) || !acceptable(p, pa, pd, a, bad))))
+      return Plan();
+    if(m_sizing.resamples())
+      return plan;
     const double old_q = (std::min)(split_quality(pa, pb, pc), split_quality(pb, pa, pd));
     const double new_q = (std::min)({split_quality(pa, p, pc), split_quality(p, pb, pc),
                                      split_quality(pb, p, pd), split_quality(p, pa, pd)});

@@ -33,11 +33,14 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Graphcut_remeshing {
 
-// The smallest angle of the triangle (a, b, c).
+// The smallest angle of the triangle (a, b, c): the one opposite its shortest side (the law of
+// sines), one arc tangent instead of three.
 inline double smallest_angle(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c)
 {
-  const std::array<double, 3> angles = triangle_angles(a, b, c);
-  return (std::min)({angles[0], angles[1], angles[2]});
+  const double ab = (b - a).squaredNorm(), bc = (c - b).squaredNorm(), ca = (a - c).squaredNorm();
+  if(bc <= ab && bc <= ca)
+    return angle(a, b, c);
+  return ca <= ab ? angle(b, c, a) : angle(c, a, b);
 }
 
 // The base of the operations (edge_flips.h, edge_splits.h, edge_collapses.h, vertex_splits.h,
@@ -108,10 +111,23 @@ public:
   bool acceptable(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c, Vertex near,
                   const Vector_3d& replaced) const
   {
-    if(!is_acceptable_triangle(a, b, c, replaced, min_turn_cosine))
-      return false;
+    return is_acceptable_triangle(a, b, c, replaced, min_turn_cosine) && faces_reference(a, b, c, near);
+  }
+
+  // The last test of acceptable(): the triangle is not turned over against the reference.
+  bool faces_reference(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c, Vertex near) const
+  {
+    double centroid_distance;
+    return faces_reference(a, b, c, near, centroid_distance);
+  }
+
+  // The same, with the distance from the triangle's centroid to the reference, from the same search.
+  bool faces_reference(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c, Vertex near,
+                       double& centroid_distance) const
+  {
     Face hint = m_state.vertex_hint[std::size_t(near)];
-    m_reference.closest_point((a + b + c) / 3, hint);
+    const Vector_3d centroid = (a + b + c) / 3;
+    centroid_distance = (centroid - m_reference.closest_point(centroid, hint)).norm();
     return is_acceptable_triangle(a, b, c, m_reference.normal(hint));
   }
 

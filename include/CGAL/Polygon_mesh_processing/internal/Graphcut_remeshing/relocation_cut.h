@@ -34,8 +34,13 @@ public:
 
   Relocation_cut(const Work_mesh& mesh, const Mesh_energy& energy) : m_mesh(mesh), m_energy(energy) {}
 
-  // Frees the graph's arrays: a connectivity pass changes the mesh, and needs the memory more.
-  void release() { m_graph = St_graph(); }
+  // Frees the graph's and the tables' arrays: a connectivity pass changes the mesh, and needs the
+  // memory more.
+  void release()
+  {
+    m_graph = St_graph();
+    m_tables = std::vector<Triangle_table>();
+  }
 
   // The labels (1: take the candidate) that minimise the binary energy of the candidates: data
   // terms as unaries, triangle terms over the triangles' moving vertices. `moving[i]` is the
@@ -70,21 +75,22 @@ private:
   Vector_3d position(Vertex v) const { return to_vector(m_mesh.point(v)); }
 
   // The tables of the triangles, each on its own, then into the cut in the order of the faces; by
-  // blocks, so that the tables of a large mesh are never all in memory.
+  // blocks, so that the tables of a large mesh are never all in memory. The blocks' array is kept
+  // from one cut to the next: each table is written whole.
   void add_triangle_terms(const std::vector<Vector_3d>& candidate, const std::vector<std::size_t>& variable,
-                          double forbidden, Binary_graph_cut& cut) const
+                          double forbidden, Binary_graph_cut& cut)
   {
     const std::size_t block = 1 << 15;
-    std::vector<Triangle_table> tables;
     for(std::size_t first = 0; first < m_mesh.num_faces(); first += block)
     {
-      tables.assign((std::min)(block, m_mesh.num_faces() - first), Triangle_table());
-      for_each_index(tables.size(), [&](std::size_t i) {
+      m_tables.resize((std::min)(block, m_mesh.num_faces() - first));
+      for_each_index(m_tables.size(), [&](std::size_t i) {
         const Face f(static_cast<Face::size_type>(first + i));
+        m_tables[i].k = 0;
         if(!m_mesh.is_removed(f))
-          fill_triangle_table(f, candidate, variable, forbidden, tables[i]);
+          fill_triangle_table(f, candidate, variable, forbidden, m_tables[i]);
       });
-      for(const Triangle_table& t : tables)
+      for(const Triangle_table& t : m_tables)
       {
         if(t.k == 1)
           cut.add_unary(t.var[0], t.table[0], t.table[1]);
@@ -155,6 +161,7 @@ private:
   const Work_mesh& m_mesh;
   const Mesh_energy& m_energy;
   St_graph m_graph; // kept from one cut to the next: its arrays only grow
+  std::vector<Triangle_table> m_tables;
 };
 
 } // namespace Graphcut_remeshing

@@ -95,8 +95,8 @@ private:
     Collapse c;
     double collapsed = -1;
     const Halfedge h = m_mesh.halfedge(e);
-    if(m_collapse && Edge_collapses(*this).best_collapse(e, c, collapsed) && collapsed > best &&
-       collapsed > smallest_angle_around(m_mesh.source(h), m_mesh.target(h)) + margin)
+    const double least_angle = (std::max)(best, smallest_angle_around(m_mesh.source(h), m_mesh.target(h)) + margin);
+    if(m_collapse && Edge_collapses(*this).best_collapse(e, c, collapsed, least_angle) && collapsed > least_angle)
     {
       best = collapsed;
       p.flip = false;
