@@ -354,6 +354,8 @@ TEST(BinaryGraphCut, ItsGraphSolvedDirectlyByBoostGivesTheSameCut)
     nontrivial += on_source_side > 0 && on_source_side < graph.number_of_nodes() ? 1 : 0;
     EXPECT_LE(gc.energy(labels), gc.energy(std::vector<char>(n, 0)));
     EXPECT_EQ(labels, gc.solve()) << "solve() on a graph of its own";
+    EXPECT_EQ(labels, gc.solve_and_free_terms(graph)) << "the terms freed before the graph is made";
+    EXPECT_EQ(gc.number_of_representable_terms(), 0u) << "no term left";
   }
   EXPECT_GT(nontrivial, 150u);
 }

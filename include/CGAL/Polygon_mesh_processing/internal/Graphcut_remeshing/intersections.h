@@ -310,7 +310,7 @@ private:
   std::size_t find_changed_triangles(std::vector<char>& changed, std::vector<Face>& changed_faces)
   {
     const std::size_t nf = m_mesh.num_faces(), nv = m_mesh.num_vertices();
-    m_triangles.resize(nf, no_triangle());
+    grow_by_elements(m_triangles, nf, no_triangle());
     std::size_t number_changed = 0;
     if(m_reconnected)
     {
@@ -333,7 +333,7 @@ private:
     }
     // Any vertex, not only the touched ones: a caller may have put others back where they were.
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    m_anchor.resize(nv, {{nan, nan, nan}}); // new vertices have drifted
+    grow_by_elements(m_anchor, nv, {{nan, nan, nan}}); // new vertices have drifted
     std::vector<char> drift(nv, 0);
     for_each_vertex(m_mesh, [&](Vertex v) { drift[std::size_t(v)] = drifted(v); });
     for(Vertex v : m_mesh.vertices())
@@ -357,7 +357,7 @@ private:
   // by low-cell axes. False, and the grid left as it was, when the buckets would grow too full.
   bool update_grid(const std::vector<char>& changed, const std::vector<Face>& changed_faces)
   {
-    m_face_box.resize(m_mesh.num_faces());
+    grow_by_elements(m_face_box, m_mesh.num_faces());
     for(Face f : changed_faces)
       m_face_box[std::size_t(f)] = grown_box(f);
     std::vector<Entry> added;

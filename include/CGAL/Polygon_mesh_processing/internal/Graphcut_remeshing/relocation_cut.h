@@ -34,13 +34,8 @@ public:
 
   Relocation_cut(const Work_mesh& mesh, const Mesh_energy& energy) : m_mesh(mesh), m_energy(energy) {}
 
-  // Frees the graph's and the tables' arrays: a connectivity pass changes the mesh, and needs the
-  // memory more.
-  void release()
-  {
-    m_graph = St_graph();
-    m_tables = std::vector<Triangle_table>();
-  }
+  // Frees the tables' arrays: a connectivity pass changes the mesh, and needs the memory more.
+  void release() { m_tables = std::vector<Triangle_table>(); }
 
   // The labels (1: take the candidate) that minimise the binary energy of the candidates: data
   // terms as unaries, triangle terms over the triangles' moving vertices. `moving[i]` is the
@@ -59,7 +54,10 @@ public:
       cut.add_unary(i, m_energy.vertex_term(moving[i]), excluded[i] ? forbidden : candidate_data[i]);
     add_triangle_terms(candidate, variable, forbidden, cut);
     add_feature_edge_terms(candidate, variable, cut);
-    return cut.solve(m_graph);
+    // The graph lives for this cut only: the largest part of the memory of a large mesh's cut, it
+    // would otherwise be held while the next cut's terms are made.
+    St_graph graph;
+    return cut.solve_and_free_terms(graph);
   }
 
 private:
@@ -160,7 +158,6 @@ private:
 
   const Work_mesh& m_mesh;
   const Mesh_energy& m_energy;
-  St_graph m_graph; // kept from one cut to the next: its arrays only grow
   std::vector<Triangle_table> m_tables;
 };
 

@@ -331,6 +331,9 @@ private:
 #endif
       if(fresh.empty())
       {
+        // The mesh's arrays grew by doubling as the pass added elements: the cuts until the next
+        // pass, where the memory peaks, should not carry the empty half.
+        m_mesh.shrink_to_fit();
         stats.number_of_flips += counts.flips;
         stats.number_of_splits += counts.splits;
         stats.number_of_collapses += counts.collapses;
@@ -390,7 +393,7 @@ private:
     c.face.resize(n);
     c.data_by_vertex.assign(n, 0);
     std::vector<double>& face_term = m_energy.proposal_face_term();
-    face_term.resize(m_mesh.num_halfedges());
+    grow_by_elements(face_term, m_mesh.num_halfedges());
     for_each_vertex(m_mesh, [&](Vertex v) {
       const std::size_t i = std::size_t(v);
       CGAL::Random rng(item_seed(m_options.random_seed, m_round, i));

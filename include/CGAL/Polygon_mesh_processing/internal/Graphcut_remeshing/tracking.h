@@ -43,18 +43,18 @@ struct Tracking_state
     const std::size_t nv = m.num_vertices(), ne = m.num_edges(), nf = m.num_faces();
     if(kind.size() < nv)
     {
-      kind.resize(nv, Vertex_kind::free_vertex);
-      closest.resize(nv);
-      vertex_hint.resize(nv);
-      location.resize(nv);
+      grow_by_elements(kind, nv, Vertex_kind::free_vertex);
+      grow_by_elements(closest, nv);
+      grow_by_elements(vertex_hint, nv);
+      grow_by_elements(location, nv);
     }
     if(feature_edge.size() < ne)
     {
-      feature_edge.resize(ne, 0);
-      edge_hint.resize(ne);
+      grow_by_elements(feature_edge, ne, char(0));
+      grow_by_elements(edge_hint, ne);
     }
     if(face_hint.size() < nf)
-      face_hint.resize(nf);
+      grow_by_elements(face_hint, nf);
   }
 };
 
