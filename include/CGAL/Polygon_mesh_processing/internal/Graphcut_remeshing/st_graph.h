@@ -6,7 +6,7 @@
 // EdgeListGraph and IncidenceGraph over flat arrays: the arcs of a node are contiguous (as in a
 // compressed sparse row graph), each has its reverse, and the capacities, residuals, parents,
 // trees and distances the algorithm reads and writes are vectors indexed by node or arc. The
-// arrays are kept from one cut to the next and only grow.
+// arrays of a graph kept from one cut to the next only grow.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_ST_GRAPH_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_ST_GRAPH_H
@@ -217,8 +217,8 @@ private:
   }
 
   // n entries, whose values are all written afterwards: when the array has to grow, it does not
-  // copy what it held, and takes room for a sixteenth more, not twice as many (the next cut's
-  // graph is about as large, and a large mesh's arrays are tens of megabytes).
+  // copy what it held, and takes room for a sixteenth more, not twice as many, for a caller that
+  // keeps the graph from one cut to the next (a large mesh's arrays are tens of megabytes).
   template <typename T>
   static void make_room(std::vector<T>& a, std::size_t n)
   {
