@@ -50,7 +50,8 @@ double distance_to_segment(const Point& p, const Point& a, const Point& b)
 }
 
 // The energy never rises from one iteration to the next, except across a connectivity pass,
-// which changes the triangles the energy sums over.
+// which changes the triangles the energy sums over. The remesher sums it after each cut and keeps
+// the cut's choice only when that sum did not rise, so not even a rounding makes it rise.
 void expect_monotone(const PMP::Graphcut_remeshing_statistics& stats, const std::string& name)
 {
   const std::vector<double>& energies = stats.energies;
@@ -60,7 +61,7 @@ void expect_monotone(const PMP::Graphcut_remeshing_statistics& stats, const std:
     if(std::find(stats.connectivity_passes.begin(), stats.connectivity_passes.end(), i) !=
        stats.connectivity_passes.end())
       continue;
-    EXPECT_LE(energies[i], energies[i - 1] * (1 + 1e-12)) << name << ": energy rose at iteration " << i;
+    EXPECT_LE(energies[i], energies[i - 1]) << name << ": energy rose at iteration " << i;
   }
 }
 

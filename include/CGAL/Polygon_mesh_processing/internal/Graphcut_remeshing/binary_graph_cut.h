@@ -11,7 +11,8 @@
 // terms representable as possible. The pairwise coefficients that remain supermodular are replaced
 // by linear upper bounds that are exact at the current labelling (all keep): the cut minimises an
 // upper bound of the energy that is tight at the current labelling, so the labelling it returns
-// never has a higher energy than keeping everything.
+// never has a higher energy than keeping everything, but for the rounding of the graph's
+// single-precision capacities (st_graph.h).
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_BINARY_GRAPH_CUT_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_BINARY_GRAPH_CUT_H

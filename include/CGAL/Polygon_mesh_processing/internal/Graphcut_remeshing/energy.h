@@ -133,6 +133,19 @@ public:
     return u;
   }
 
+  // The terms at the current positions, to be put back should a relocation be undone.
+  struct Saved_terms
+  {
+    std::vector<double> face, vertex, edge;
+  };
+  Saved_terms saved_terms() const { return {m_face_term, m_vertex_term, m_edge_term}; }
+  void restore_terms(Saved_terms&& saved)
+  {
+    m_face_term = std::move(saved.face);
+    m_vertex_term = std::move(saved.vertex);
+    m_edge_term = std::move(saved.edge);
+  }
+
   double face_term(Face f) const { return m_face_term[std::size_t(f)]; }
   double vertex_term(Vertex v) const { return m_vertex_term[std::size_t(v)]; }
   double edge_term(std::size_t slot) const { return m_edge_term[slot]; }

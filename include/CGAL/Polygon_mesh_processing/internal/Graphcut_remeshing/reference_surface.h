@@ -81,13 +81,16 @@ public:
         if(r.across[i] != Mesh::null_face())
           for(Vertex u : m_faces[std::size_t(r.across[i])].vertices)
             if(u != r.vertices[(i + 1) % 3] && u != r.vertices[(i + 2) % 3])
-              r.rise[i] = r.normal.dot(point(u)) - r.offset;
+            {
+              const double rise = r.normal.dot(point(u)) - r.offset;
+              r.rise[i] = static_cast<signed char>((rise > 0) - (rise < 0));
+            }
     }
   }
 
   const Mesh& mesh() const { return m_mesh; }
   const Local_frame& frame(Vertex v) const { return m_frames[std::size_t(v)]; }
-  Vector_3d point(Vertex v) const { return m_points[std::size_t(v)]; }
+  Vector_3d point(Vertex v) const { return to_vector(m_mesh.point(v)); }
 
   // Local search of section 2.1: from `start`, move to a neighbour closer to x while there is one.
   Vertex closest_vertex(const Vector_3d& x, Vertex start) const
@@ -305,11 +308,11 @@ private:
     std::array<Face, 3> across;      // the triangle across the edge opposite vertices[i], or null
     unsigned char smooth_across = 0; // bit i: across[i] is within the smooth angle of this triangle
     bool needle = false;             // is_needle_or_cap
+    std::array<signed char, 3> rise{}; // sign of the height of across[i]'s third vertex over the plane
     Vector_3d normal = Vector_3d::UnitZ();
     double offset = 0;                // the plane is normal . x = offset
     // e0.e0, e0.e1, e1.e1 for the edges e0, e1 from vertices[0], then 1 / the Gram determinant.
     std::array<double, 4> gram{};
-    std::array<double, 3> rise{};     // height over the plane of across[i]'s third vertex
   };
 
   Vector_3d project(const Vector_3d& x, Face f, std::array<double, 3>& weights) const
@@ -335,9 +338,6 @@ private:
 
   void collect_faces()
   {
-    m_points.resize(m_mesh.num_vertices());
-    for(Vertex v : m_mesh.vertices())
-      m_points[std::size_t(v)] = to_vector(m_mesh.point(v));
     m_faces.assign(m_mesh.num_faces(), Face_record());
     for(Face f : m_mesh.faces())
     {
@@ -450,7 +450,6 @@ private:
   }
 
   const Mesh& m_mesh;
-  std::vector<Vector_3d> m_points;     // by vertex
   std::vector<Face_record> m_faces;    // by face
   std::vector<Local_frame> m_frames;
   double m_smooth_cosine;

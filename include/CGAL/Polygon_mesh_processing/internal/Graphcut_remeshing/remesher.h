@@ -194,8 +194,9 @@ public:
       return 0;
     // The cut decides; should its choice make triangles that were apart intersect, or fold a
     // triangle onto a neighbour, the vertices of those triangles keep their positions and the cut
-    // decides again (each cut is over fewer
-    // candidates and never does worse than keeping everything, so the energy still does not rise).
+    // decides again over fewer candidates. The cut never does worse than keeping everything but
+    // for the rounding of its single-precision capacities: a choice that would raise the energy
+    // of eq. (1) is undone whole, so that the energy never rises.
     std::vector<char> excluded(c.moving.size(), 0);
     for(;;)
     {
@@ -216,13 +217,13 @@ public:
         touched[std::size_t(c.moving[i])] = labels[i];
       const bool intersecting = exclude_new_intersections(c, labels, touched, excluded);
       const bool folding = exclude_new_folds(c, labels, previous, excluded);
-      if(!intersecting && !folding)
-      {
-        take_candidates(c, labels, touched);
+      const bool decided = !intersecting && !folding;
+      if(decided && take_candidates(c, labels, touched))
         return moved;
-      }
       for(std::size_t i = 0; i < c.moving.size(); ++i)
         set_position(c.moving[i], previous[i]);
+      if(decided)
+        return 0;
     }
   }
 
@@ -500,17 +501,40 @@ private:
 
   // The candidates taken: where they were found on the reference, so that the data terms kept
   // are the ones the cut was given, and the terms of what moved.
-  void take_candidates(const Candidate_set& c, const std::vector<char>& labels, const std::vector<char>& touched)
+  // The vertices of label 1 are at their candidates: their places on the reference and the
+  // terms follow, unless the energy of eq. (1) would rise, and then both stay as they were (the
+  // caller puts the vertices back). Whether they were taken.
+  bool take_candidates(const Candidate_set& c, const std::vector<char>& labels, const std::vector<char>& touched)
   {
+    const double before = m_energy.energy();
+    Mesh_energy::Saved_terms terms = m_energy.saved_terms();
+    std::vector<Location> location(c.moving.size());
+    std::vector<Face> hint(c.moving.size());
     for(std::size_t i = 0; i < c.moving.size(); ++i)
-      if(labels[i] && m_state.kind[std::size_t(c.moving[i])] == Vertex_kind::feature_vertex)
-        m_state.location[std::size_t(c.moving[i])] = c.location[i];
-      else if(labels[i] && m_state.kind[std::size_t(c.moving[i])] == Vertex_kind::free_vertex)
-        m_state.vertex_hint[std::size_t(c.moving[i])] = c.face[i];
+    {
+      const std::size_t v = std::size_t(c.moving[i]);
+      location[i] = m_state.location[v];
+      hint[i] = m_state.vertex_hint[v];
+      if(labels[i] && m_state.kind[v] == Vertex_kind::feature_vertex)
+        m_state.location[v] = c.location[i];
+      else if(labels[i] && m_state.kind[v] == Vertex_kind::free_vertex)
+        m_state.vertex_hint[v] = c.face[i];
+    }
     m_energy.update_terms_after_relocation(touched, c.data_by_vertex);
+    if(!(m_energy.energy() <= before))
+    {
+      m_energy.restore_terms(std::move(terms));
+      for(std::size_t i = 0; i < c.moving.size(); ++i)
+      {
+        m_state.location[std::size_t(c.moving[i])] = location[i];
+        m_state.vertex_hint[std::size_t(c.moving[i])] = hint[i];
+      }
+      return false;
+    }
     for(std::size_t i = 0; i < c.moving.size(); ++i)
       if(labels[i])
         m_tracking.mark_moved(c.moving[i]);
+    return true;
   }
 
   // Pairs of intersecting triangles (exact predicates) away from the input's own intersections

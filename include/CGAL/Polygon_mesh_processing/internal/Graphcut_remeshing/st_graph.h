@@ -6,7 +6,9 @@
 // EdgeListGraph and IncidenceGraph over flat arrays: the arcs of a node are contiguous (as in a
 // compressed sparse row graph), each has its reverse, and the capacities, residuals, parents,
 // trees and distances the algorithm reads and writes are vectors indexed by node or arc. The
-// arrays of a graph kept from one cut to the next only grow.
+// capacities are in single precision: they are the largest array of a large mesh's cut, and the
+// caller checks what the cut chose in double precision (remesher.h). The arrays of a graph kept
+// from one cut to the next only grow.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_ST_GRAPH_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_ST_GRAPH_H
@@ -84,6 +86,7 @@ class St_graph
 {
 public:
   using Index = st_graph::Index;
+  using Capacity = float;
 
   // What boost::graph_traits reads.
   using vertex_descriptor = Index;
@@ -144,6 +147,7 @@ public:
   {
     if(!m_laid_out)
       lay_out();
+    m_fill = std::vector<Index>();
     const std::size_t n = std::size_t(m_nodes) + 2;
     make_room(m_parent, n);
     make_room(m_color, n);
@@ -166,7 +170,7 @@ public:
   Index first_arc(Index u) const { return m_first[u]; }
   Index head(Index a) const { return m_head[a]; }
   Index reverse(Index a) const { return m_reverse[a]; }
-  double capacity(Index a) const { return m_capacity[a]; } // the residual one after solve()
+  double capacity(Index a) const { return double(m_capacity[a]); } // the residual one after solve()
   const Index* first_arcs() const { return m_first.data(); }
 
 private:
@@ -214,18 +218,21 @@ private:
         link(s, i, m_terminal[i], 0.);
       else if(m_terminal[i] < 0)
         link(i, t, -m_terminal[i], 0.);
+    m_terminal = std::vector<double>();
   }
 
   // n entries, whose values are all written afterwards: when the array has to grow, it does not
-  // copy what it held, and takes room for a sixteenth more, not twice as many, for a caller that
-  // keeps the graph from one cut to the next (a large mesh's arrays are tens of megabytes).
+  // copy what it held, and (but in a fresh graph) takes room for a sixteenth more, not twice as
+  // many, for a caller that keeps the graph from one cut to the next (a large mesh's arrays are
+  // tens of megabytes).
   template <typename T>
   static void make_room(std::vector<T>& a, std::size_t n)
   {
     if(a.capacity() < n)
     {
+      const bool fresh = a.capacity() == 0;
       a = std::vector<T>();
-      a.reserve(n + n / 16);
+      a.reserve(fresh ? n : n + n / 16);
     }
     a.resize(n);
   }
@@ -237,18 +244,18 @@ private:
     m_head[b] = u;
     m_reverse[a] = b;
     m_reverse[b] = a;
-    m_capacity[a] = capacity;
-    m_capacity[b] = reverse_capacity;
+    m_capacity[a] = Capacity(capacity);
+    m_capacity[b] = Capacity(reverse_capacity);
   }
 
   Index m_nodes = 0;
   bool m_laid_out = false;
-  std::vector<double> m_terminal;    // by node: source capacity minus sink capacity
+  std::vector<double> m_terminal;    // by node, until laid out: source capacity minus sink capacity
   std::vector<Index> m_first;        // by node, then one past the last: its first arc
   std::vector<Index> m_fill;         // by node, while the arcs are added: its next arc
   std::vector<Index> m_head;         // by arc
   std::vector<Index> m_reverse;      // by arc
-  std::vector<double> m_capacity;    // by arc; the residual capacity once solved
+  std::vector<Capacity> m_capacity;  // by arc; the residual capacity once solved
   std::vector<Arc> m_parent;         // by node, written by the algorithm
   std::vector<boost::default_color_type> m_color; // by node: its search tree at the end
   std::vector<Index> m_distance;     // by node, written by the algorithm
