@@ -499,11 +499,10 @@ private:
     return folds;
   }
 
-  // The candidates taken: where they were found on the reference, so that the data terms kept
-  // are the ones the cut was given, and the terms of what moved.
-  // The vertices of label 1 are at their candidates: their places on the reference and the
-  // terms follow, unless the energy of eq. (1) would rise, and then both stay as they were (the
-  // caller puts the vertices back). Whether they were taken.
+  // The vertices of label 1 are at their candidates: their places on the reference follow (so
+  // that the data terms kept are the ones the cut was given) and so do the terms of what moved,
+  // unless the energy of eq. (1) would rise; then both stay as they were and the caller puts the
+  // vertices back. Whether the candidates were taken.
   bool take_candidates(const Candidate_set& c, const std::vector<char>& labels, const std::vector<char>& touched)
   {
     const double before = m_energy.energy();
