@@ -19,6 +19,8 @@
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/version.h>
 
+#include <boost/property_map/property_map.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cctype>
@@ -29,6 +31,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -357,13 +360,18 @@ struct Method_result
   std::size_t output_vertices = 0;
   double mean_min_angle = 0;
   double mean_max_angle = 0;
-  double hausdorff = 0; // relative to the input's bounding-box diagonal
+  double min_angle = 0;    // degrees
+  double poor_percent = 0; // share of triangles with an angle below tools::quality_poor_angle
+  double hausdorff = 0;    // relative to the input's bounding-box diagonal
 };
 
 struct Mesh_result
 {
   std::string name;
   std::size_t input_vertices = 0;
+  double input_min_angle = 0;        // degrees
+  std::size_t input_sharp_edges = 0; // of a dihedral angle of cgal_sharp_angle or more
+  std::size_t input_border_edges = 0;
   std::size_t repetitions = 0;
   Method_result ours, cgal;
 };
@@ -375,6 +383,21 @@ double median(std::vector<double> values)
   if(n == 0)
     return 0;
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// The input's smallest angle and its sharp and border edges, which the corpus's bars on the
+// smallest angle depend on.
+void describe_input(const Mesh& input, Mesh_result& row)
+{
+  row.input_min_angle = PMP::mesh_quality_report(input).min_angle;
+  std::map<Mesh::Edge_index, bool> sharp;
+  boost::associative_property_map<std::map<Mesh::Edge_index, bool> > ecm(sharp);
+  PMP::detect_sharp_edges(input, cgal_sharp_angle, ecm);
+  for(Mesh::Edge_index e : edges(input))
+  {
+    row.input_sharp_edges += get(ecm, e) ? 1 : 0;
+    row.input_border_edges += is_border(e, input) ? 1 : 0;
+  }
 }
 
 // Runs `remesh(copy)` on fresh copies of `input`, `repetitions` times; `remesh` returns the seconds
@@ -413,6 +436,8 @@ Method_result run_method(const std::string& mesh_name, const std::string& method
   result.output_vertices = quality.number_of_vertices;
   result.mean_min_angle = quality.mean_min_angle;
   result.mean_max_angle = quality.mean_max_angle;
+  result.min_angle = quality.min_angle;
+  result.poor_percent = tools::poor_triangle_percentage(*last, tools::quality_poor_angle);
   result.hausdorff = PMP::relative_surface_distance(input, *last).hausdorff;
   std::cerr << " done\n";
   return result;
@@ -568,6 +593,8 @@ void write_json(std::ostream& out, const Method_result& m, std::size_t input_ver
       << ", \"output_vertices\": " << m.output_vertices
       << ", \"mean_min_angle\": " << tools::json_number(m.mean_min_angle)
       << ", \"mean_max_angle\": " << tools::json_number(m.mean_max_angle)
+      << ", \"min_angle\": " << tools::json_number(m.min_angle)
+      << ", \"poor_percent\": " << tools::json_number(m.poor_percent)
       << ", \"hausdorff\": " << tools::json_number(m.hausdorff) << "}";
 }
 
@@ -584,7 +611,10 @@ void write_json(std::ostream& out, const std::vector<Mesh_result>& results, cons
   {
     const Mesh_result& r = results[i];
     out << (i ? ",\n  " : "\n  ") << "{\"name\": " << json_string(r.name)
-        << ", \"input_vertices\": " << r.input_vertices << ", \"repetitions\": " << r.repetitions
+        << ", \"input_vertices\": " << r.input_vertices
+        << ", \"input_min_angle\": " << tools::json_number(r.input_min_angle)
+        << ", \"input_sharp_edges\": " << r.input_sharp_edges
+        << ", \"input_border_edges\": " << r.input_border_edges << ", \"repetitions\": " << r.repetitions
         << ",\n   \"ours\": ";
     write_json(out, r.ours, r.input_vertices);
     out << ",\n   \"cgal\": ";
@@ -724,6 +754,7 @@ int run_corpus_mode(const std::string& data_dir, std::size_t max_vertices, std::
       const Mesh input = tools::read_mesh(data_dir + "/" + file, true);
       row.input_vertices = num_vertices(input);
       std::cerr << ' ' << row.input_vertices << " vertices\n";
+      describe_input(input, row);
       if(row.input_vertices > max_vertices)
       {
         left_out.push_back(file + ": " + std::to_string(row.input_vertices) + " vertices");
@@ -962,6 +993,7 @@ int main(int argc, char** argv)
       const Mesh input = large ? build_large_mesh(data_dir) : tools::read_mesh(data_dir + "/" + name + ".off", true);
       row.input_vertices = num_vertices(input);
       std::cerr << ' ' << row.input_vertices << " vertices\n";
+      describe_input(input, row);
       if(run_ours_method)
         row.ours = run_method(name, "ours", input, row.repetitions, memory, run_ours);
       if(run_cgal_method)

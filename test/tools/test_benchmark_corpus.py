@@ -3,8 +3,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Drives `benchmark_remeshing --corpus` on a directory it writes: the meshes small enough get a
 row each with both times and their ratio in the summary, the larger and the unreadable ones are
-listed as left out with their reason, the JSON holds the same rows, and the options of the other
-modes are refused.
+listed as left out with their reason, the JSON holds the same rows with the figures of the
+smallest-angle bars, and the options of the other modes are refused.
 
 usage: test_benchmark_corpus.py BENCHMARK_REMESHING
 """
@@ -70,6 +70,18 @@ with tempfile.TemporaryDirectory() as tmp:
         meshes = json.load(f)['meshes']
     check(sorted(m['name'] for m in meshes) == rows, 'JSON rows %r' % [m['name'] for m in meshes])
     check(all(m['ours']['seconds'] > 0 and m['cgal']['seconds'] >= 0 for m in meshes), 'JSON times')
+    # What the smallest-angle bars need: the input's smallest angle and its sharp and border edges
+    # (both regular solids: every angle 60 degrees, every edge of a dihedral angle far above 35),
+    # each result's smallest angle and share of triangles below 30 degrees.
+    edges = {'tetra.off': 6, 'octahedron.off': 12}
+    for m in meshes:
+        check(abs(m['input_min_angle'] - 60) < 1e-6, '%s: input_min_angle %r' % (m['name'], m['input_min_angle']))
+        check(m['input_sharp_edges'] == edges[m['name']] and m['input_border_edges'] == 0,
+              '%s: sharp %r, border %r' % (m['name'], m['input_sharp_edges'], m['input_border_edges']))
+        for method in ('ours', 'cgal'):
+            q = m[method]
+            check(0 < q['min_angle'] <= 60 + 1e-6 and 0 <= q['poor_percent'] <= 100,
+                  '%s %s: min_angle %r, poor_percent %r' % (m['name'], method, q['min_angle'], q['poor_percent']))
 
     for wrong in (['--corpus', '--quality'], ['--corpus', '--meshes', 'fandisk'], ['--corpus', '--seeds', '0'],
                   ['--max-vertices', '10', '--skip-large'], ['--corpus', '--max-vertices', '0']):
