@@ -79,7 +79,8 @@ public:
       m_sizing(make_sizing_field(m_reference_mesh, m_reference_feature_edge, options, input_mean_length)),
       m_tracking(m_mesh, m_reference, m_polylines, m_state),
       m_energy(m_mesh, m_reference, m_state,
-               m_sizing.resamples() ? resampling_weights(options.weights, m_sizing.tolerance) : options.weights),
+               m_sizing.resamples() ? resampling_weights(options.weights, m_sizing.tolerance, !m_sizing.target_asked_for)
+                                   : options.weights),
       m_candidates(m_mesh, m_reference, m_polylines, m_state, m_energy, options.smoothing_step),
       m_cut(m_mesh, m_energy), m_intersections(mesh)
   {
