@@ -388,7 +388,9 @@ remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<Trian
  *   \cgalParamNBegin{graphcut_parameters::face_data_weight}
  *     \cgalParamDescription{beyond the paper: the weight, relative to `lambda_data`, of a data term
  *                           at each triangle's centroid, which keeps triangles from cutting chords
- *                           through curved parts of the input; `0` gives the paper's energy}
+ *                           through curved parts of the input; `0` gives the paper's energy.
+ *                           When the call re-samples at the input's density, only the distance
+ *                           beyond half the sizing field's tolerance counts (see the manual)}
  *     \cgalParamType{`double`}
  *     \cgalParamDefault{`0.05`}
  *   \cgalParamNEnd
