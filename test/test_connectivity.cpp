@@ -1006,6 +1006,44 @@ TEST(Connectivity_pass, LongSharpEdgesAreSplitOnTheirPolyline)
   }
 }
 
+// A triangle just off the wall of a concave crease is tested against the wall, even when its
+// vertex on the crease is tracked from the floor: the descent from the floor stops inside it, as
+// high below the centroid as the centroid is (at the bottom of a hole drilled into a part, the
+// wall's triangles then seemed turned over and were never split).
+TEST(Connectivity_pass, ATriangleOffTheWallOfAConcaveCreaseFacesTheWall)
+{
+  for(double scale : {1e-3, 1.0, 1e3})
+  {
+    const std::string name = "crease at scale " + std::to_string(scale);
+    // Columns 0 to 4: the wall x = 0, z from 1 down to 0; columns 4 to 8: the floor z = 0, x from
+    // 0 to 1. The normals are +x and +z: the crease along y is concave.
+    const Mesh crease = make_grid(9, 5, [scale](std::size_t i, std::size_t j) {
+      const double t = double(i) / 4, y = double(j) / 4;
+      return i <= 4 ? Point(0, scale * y, scale * (1 - t)) : Point(scale * (t - 1), scale * y, 0);
+    });
+    Pass_setup s(to_work_mesh(crease));
+    Work::Vertex_index v;
+    for(auto u : s.mesh.vertices())
+      if((s.point(u) - GR::Vector_3d(0, 0.5 * scale, 0)).norm() < 1e-12 * scale)
+        v = u;
+    ASSERT_NE(v, Work::null_vertex()) << name;
+    for(auto h : halfedges_around_target(s.mesh.halfedge(v), s.mesh))
+    {
+      const auto f = s.mesh.face(h);
+      if(f != Work::null_face() && s.reference.normal(f).z() > 0.5)
+        s.state.vertex_hint[std::size_t(v)] = f; // on the floor
+    }
+    ASSERT_GT(s.reference.normal(s.state.vertex_hint[std::size_t(v)]).z(), 0.5) << name;
+    // On the plane x = 0.01 + 0.1 z, in front of the wall, facing (1, 0, -0.1): towards the wall's
+    // side, away from the floor's.
+    const auto on_plane = [scale](double y, double z) { return GR::Vector_3d(scale * (0.01 + 0.1 * z), scale * y, scale * z); };
+    const GR::Vector_3d a = on_plane(0.4, 0.3), b = on_plane(0.6, 0.3), c = on_plane(0.4, 0.5);
+    double centroid_distance = -1;
+    EXPECT_TRUE(s.operations().faces_reference(a, b, c, v, centroid_distance)) << name;
+    EXPECT_NEAR(centroid_distance, ((a + b + c) / 3).x(), 1e-9 * scale) << name;
+  }
+}
+
 // Beyond the paper, the relaxation keeps only the moves that do not raise the local energy.
 TEST(Connectivity_pass, RelaxationKeepsOnlyMovesThatDoNotRaiseTheLocalEnergy)
 {

@@ -44,6 +44,9 @@ inline double split_quality(const Vector_3d& a, const Vector_3d& b, const Vector
 class Edge_splits : public Local_operations
 {
 public:
+  // Below this smallest angle a split may not make a triangle worse than the one it cuts.
+  static constexpr double min_split_angle = 0.5 * pi / 180;
+
   // Where a split puts its vertex: a sharp edge at the point of its reference polyline halfway
   // between its ends (`on_feature`), other edges at their midpoint brought onto the reference.
   struct Plan
@@ -118,7 +121,9 @@ public:
         old_min = (std::min)(old_min, smallest_angle(pb, pa, pd));
         new_min = (std::min)({new_min, smallest_angle(pb, p, pd), smallest_angle(p, pa, pd)});
       }
-      if(!(new_min >= 0.5 * old_min))
+      // Halving alone compounds: a row of slivers split again and again (a CAD cylinder's
+      // side) reached triangles of 1e-4 degrees, some turned over.
+      if(!(new_min >= 0.5 * old_min) || (new_min < old_min && new_min < min_split_angle))
         return Plan();
       plan.gain = Sizing_field::excess(length, edge_length_target(a, b));
     }

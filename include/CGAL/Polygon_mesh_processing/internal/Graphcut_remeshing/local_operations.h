@@ -128,7 +128,45 @@ public:
     Face hint = m_state.vertex_hint[std::size_t(near)];
     const Vector_3d centroid = (a + b + c) / 3;
     centroid_distance = (centroid - m_reference.closest_point(centroid, hint)).norm();
-    return is_acceptable_triangle(a, b, c, m_reference.normal(hint));
+    if(is_acceptable_triangle(a, b, c, m_reference.normal(hint)))
+      return true;
+    // At a coarse length the triangle spans several reference vertices: the triangles around the
+    // one `near` is tracked to say little about the side its centroid is on.
+    if(m_sizing.covers_reference)
+      return false;
+    const Face first = hint;
+    centroid_distance = search_around(centroid, m_state.closest[std::size_t(near)], centroid_distance, hint);
+    // Found from the other side of a sharp edge: next to it the triangle must face the reference
+    // clearly, as a new triangle must face the ones it replaces; a sliver seen edge-on there has a
+    // normal the rounding decides.
+    return hint != first && is_acceptable_triangle(a, b, c, m_reference.normal(hint), min_turn_cosine);
+  }
+
+  // The descent from a triangle of the reference stops where no step brings it closer. Next to a
+  // sharp edge that triangle may be on the other side of it: at the bottom of a hole, the centroid
+  // of a triangle on the hole's wall, searched from a triangle of the bottom, stops inside it, as
+  // far from the wall as the centroid is high, and the wall's triangle seems turned over. So where
+  // that matters the search is made again from the triangles around the reference vertex y near
+  // x, and a point found there is kept when it is less than half as far as the one found before
+  // (at `distance`, in `hint`): between two triangles about as close, a seam where a triangle is
+  // seen edge-on, the first search decides, as without this one. Returns the distance kept.
+  double search_around(const Vector_3d& x, Vertex y, double distance, Face& hint) const
+  {
+    const Work_mesh& reference = m_reference.mesh();
+    const double first = distance;
+    for(Halfedge g : halfedges_around_target(reference.halfedge(y), reference))
+    {
+      if(reference.is_border(g))
+        continue;
+      Face other = reference.face(g);
+      const double d = (x - m_reference.closest_point(x, other)).norm();
+      if(d < distance && d < first / 2)
+      {
+        distance = d;
+        hint = other;
+      }
+    }
+    return distance;
   }
 
   Vector_3d project(const Vector_3d& x, Vertex near) const
