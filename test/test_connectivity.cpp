@@ -745,6 +745,45 @@ TEST(Connectivity_pass, SmallestAngleRepairRaisesTheWorstAngle)
   EXPECT_LE(poor_total_after, poor_total_before / 2);
 }
 
+// A vertex of a box's edge slid up to a corner (as the relocation can slide one) is slid back along
+// its line by the repair: its smallest angle grows and it stays on the line, at every scale.
+TEST(Connectivity_pass, SmallestAngleRepairSlidesAVertexAwayFromACorner)
+{
+  for(double scale : {1e-3, 1.0, 1e3})
+  {
+    const std::string name = "box at scale " + std::to_string(scale);
+    // Targets twice the mean edge length: the box's edges are then within their bounds.
+    Pass_setup s(to_work_mesh(jittered_box(scale, scale, scale, 4, 7)), 2.0);
+    Work::Vertex_index v, corner;
+    for(auto h : s.mesh.halfedges())
+      if(s.state.feature_edge[std::size_t(s.mesh.edge(h))] &&
+         s.state.kind[std::size_t(s.mesh.source(h))] == GR::Vertex_kind::fixed_vertex &&
+         s.state.kind[std::size_t(s.mesh.target(h))] == GR::Vertex_kind::feature_vertex)
+      {
+        corner = s.mesh.source(h);
+        v = s.mesh.target(h);
+        break;
+      }
+    ASSERT_NE(v, Work::null_vertex()) << name;
+    const GR::Vector_3d towards = 0.95 * (s.point(corner) - s.point(v));
+    s.state.location[std::size_t(v)] = s.polylines.move(s.state.location[std::size_t(v)], towards);
+    const GR::Vector_3d slid = s.polylines.point(s.state.location[std::size_t(v)]);
+    s.mesh.point(v) = Work::Point(slid.x(), slid.y(), slid.z());
+    GR::Local_operations operations = s.operations_with_features();
+    const double before_angle = operations.smallest_angle_around(v, v);
+    const GR::Smallest_angle_repair::Counts counts = GR::Smallest_angle_repair(operations, false, false, true).run();
+    EXPECT_GE(counts.moves, 1u) << name;
+    EXPECT_GT(operations.smallest_angle_around(v, v), 3 * before_angle) << name;
+    EXPECT_LT((s.polylines.point(s.state.location[std::size_t(v)]) - s.point(v)).norm(), 1e-12 * scale) << name;
+    // No triangle turns (the pass guarantees hold but for the feature vertex that slides).
+    for(auto h : halfedges_around_target(s.mesh.halfedge(v), s.mesh))
+    {
+      const GR::Vector_3d a = s.point(s.mesh.source(h)), b = s.point(v), c = s.point(s.mesh.target(s.mesh.next(h)));
+      EXPECT_GT(GR::area_vector(a, b, c).dot(s.reference_normal((a + b + c) / 3)), 0) << name;
+    }
+  }
+}
+
 // Collapses happen only on short edges whose both ends are off features and in flat regions.
 TEST(Connectivity_pass, CollapsesStayAwayFromFeaturesAndCurvedParts)
 {

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -119,12 +120,13 @@ private:
     return smallest;
   }
 
-  // The free vertices with a small angle around them, worst first, each moved once when that pays.
+  // The free vertices and the vertices sliding on a feature line with a small angle around them,
+  // worst first, each moved once when that pays.
   std::size_t move_vertices()
   {
     std::vector<std::pair<double, Vertex> > worst;
     for(Vertex v : m_mesh.vertices())
-      if(is_free(v))
+      if(is_free(v) || m_state.kind[std::size_t(v)] == Vertex_kind::feature_vertex)
       {
         const double s = smallest_angle_around(v, v);
         if(s < poor_angle)
@@ -133,8 +135,87 @@ private:
     std::sort(worst.begin(), worst.end());
     std::size_t moved = 0;
     for(const auto& w : worst)
-      moved += move_vertex(w.second) ? 1 : 0;
+      moved += (is_free(w.second) ? move_vertex(w.second) : slide_vertex(w.second)) ? 1 : 0;
     return moved;
+  }
+
+  // v, sliding on a feature line between its neighbours a and b along it, to the point of the line
+  // halfway between them or half the way there (the relocation can slide a vertex up to a corner,
+  // where a collapse would make a line edge too long): the one that raises the smallest angle
+  // around v most, if one does, with both line edges within the tolerance of the line.
+  bool slide_vertex(Vertex v)
+  {
+    if(!m_polylines)
+      return false;
+    Vertex ends[2];
+    std::size_t degree = 0;
+    boost::container::small_vector<Halfedge, 16> link; // on each triangle, the side facing v
+    for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+    {
+      const char feature = m_state.feature_edge[std::size_t(m_mesh.edge(g))];
+      if(feature == constrained_feature_edge || (feature && degree == 2))
+        return false;
+      if(feature)
+        ends[degree++] = m_mesh.source(g);
+      if(!m_mesh.is_border(g))
+        link.push_back(m_mesh.prev(g));
+    }
+    if(degree != 2)
+      return false;
+    const Vector_3d x = position(v);
+    const Location middle = feature_midpoint(ends[0], ends[1]);
+    const Location halfway = m_polylines->move(feature_location(v), (m_polylines->point(middle) - x) / 2);
+    double best = smallest_angle_around(v, v) + margin;
+    std::size_t poor = 0;
+    for(Halfedge g : link)
+      poor += smallest_angle(position(m_mesh.source(g)), position(m_mesh.target(g)), x) < poor_angle ? 1 : 0;
+    std::optional<Location> best_location;
+    for(const Location& l : {middle, halfway})
+    {
+      const Vector_3d y = m_polylines->point(l);
+      bool on_line = true;
+      for(Vertex end : ends)
+      {
+        const double chord = (y - position(end)).norm(), target = edge_length_target(v, end);
+        on_line = on_line && !Sizing_field::is_too_long(chord, target) &&
+                  m_polylines->chord_deviation(l, feature_location(end), 2 * chord) <= m_sizing.tolerance_for(chord, target);
+      }
+      const double smallest = on_line ? smallest_angle_after_move(link, x, y, v, poor) : -1;
+      if(smallest > best && fan_unfolded(link, y, {v}))
+      {
+        best = smallest;
+        best_location = l;
+      }
+    }
+    if(!best_location)
+      return false;
+    const Vector_3d y = m_polylines->point(*best_location);
+    m_mesh.point(v) = Work_kernel::Point_3(y.x(), y.y(), y.z());
+    m_state.location[std::size_t(v)] = *best_location;
+    bind_new_vertex(v, v, Vertex_kind::feature_vertex);
+    track_faces_from(v);
+    return true;
+  }
+
+  // The smallest angle of the triangles of `link` (their sides facing v) once v moves from x to y,
+  // or -1 when one of them turns, leaves the reference by more than the tolerance, or when more of
+  // them than `poor` fall below poor_angle.
+  double smallest_angle_after_move(const boost::container::small_vector<Halfedge, 16>& link, const Vector_3d& x,
+                                   const Vector_3d& y, Vertex v, std::size_t poor) const
+  {
+    double smallest = pi;
+    std::size_t poor_after = 0;
+    for(Halfedge g : link)
+    {
+      const Vector_3d p = position(m_mesh.source(g)), q = position(m_mesh.target(g));
+      if(!is_acceptable_triangle(p, q, y, area_vector(p, q, x), min_turn_cosine) ||
+         distance_to_reference((p + q + y) / 3, v) > m_sizing.tolerance)
+        return -1;
+      const double s = smallest_angle(p, q, y);
+      smallest = (std::min)(smallest, s);
+      poor_after += s < poor_angle ? 1 : 0;
+    }
+    return poor_after <= poor ? smallest : -1;
   }
 
   // v towards the centroid of its neighbours or the apex of the equilateral triangle on the far side
