@@ -30,7 +30,8 @@ namespace Graphcut_remeshing {
 // collapse of one (as the re-sampling collapses do, along its line for a feature edge), whichever
 // leaves the larger smallest angle; then a move of their free vertices towards the centroid of
 // their neighbours or towards the apex that would make their worst triangle equilateral, in the
-// tangent plane and onto the reference. An operation is taken only when
+// tangent plane and onto the reference, and a slide of their vertices on feature lines towards
+// the middle of their line neighbours. An operation is taken only when
 // it raises the smallest angle of the triangles it changes, so the worst triangle never gets
 // worse, and with the checks of its kind: acceptable triangles, no fold, within the sizing
 // tolerance of the reference. New self-intersections are the pass's to check
