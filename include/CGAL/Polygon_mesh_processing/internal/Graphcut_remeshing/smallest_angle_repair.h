@@ -199,10 +199,12 @@ private:
   }
 
   // The smallest angle of the triangles of `link` (their sides facing v) once v moves from x to y,
-  // or -1 when one of them turns, leaves the reference by more than the tolerance, or when more of
-  // them than `poor` fall below poor_angle.
+  // or -1 when one of them turns (against its own normal, and against `normal` when one is given),
+  // leaves the reference by more than the tolerance, or when more of them than `poor` fall below
+  // poor_angle.
   double smallest_angle_after_move(const boost::container::small_vector<Halfedge, 16>& link, const Vector_3d& x,
-                                   const Vector_3d& y, Vertex v, std::size_t poor) const
+                                   const Vector_3d& y, Vertex v, std::size_t poor,
+                                   const std::optional<Vector_3d>& normal = std::nullopt) const
   {
     double smallest = pi;
     std::size_t poor_after = 0;
@@ -210,6 +212,7 @@ private:
     {
       const Vector_3d p = position(m_mesh.source(g)), q = position(m_mesh.target(g));
       if(!is_acceptable_triangle(p, q, y, area_vector(p, q, x), min_turn_cosine) ||
+         (normal && !is_acceptable_triangle(p, q, y, *normal)) ||
          distance_to_reference((p + q + y) / 3, v) > m_sizing.tolerance)
         return -1;
       const double s = smallest_angle(p, q, y);
@@ -254,23 +257,8 @@ private:
     {
       Face hint = m_state.vertex_hint[std::size_t(v)];
       const Vector_3d y = m_reference.closest_point(x + tangential(target - x, normal), hint);
-      double smallest = pi;
-      std::size_t poor_after = 0;
-      for(Halfedge g : link)
-      {
-        const Vector_3d p = position(m_mesh.source(g)), q = position(m_mesh.target(g));
-        if(!is_acceptable_triangle(p, q, y, area_vector(p, q, x), min_turn_cosine) ||
-           !is_acceptable_triangle(p, q, y, m_reference.normal(hint)) ||
-           distance_to_reference((p + q + y) / 3, v) > m_sizing.tolerance)
-        {
-          smallest = -1;
-          break;
-        }
-        const double s = smallest_angle(p, q, y);
-        smallest = (std::min)(smallest, s);
-        poor_after += s < poor_angle ? 1 : 0;
-      }
-      if(smallest > best && poor_after <= poor && fan_unfolded(link, y, {v}))
+      const double smallest = smallest_angle_after_move(link, x, y, v, poor, m_reference.normal(hint));
+      if(smallest > best && fan_unfolded(link, y, {v}))
       {
         best = smallest;
         best_y = y;
