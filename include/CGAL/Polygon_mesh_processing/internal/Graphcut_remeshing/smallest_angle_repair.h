@@ -167,9 +167,7 @@ private:
     const Location middle = feature_midpoint(ends[0], ends[1]);
     const Location halfway = m_polylines->move(feature_location(v), (m_polylines->point(middle) - x) / 2);
     double best = smallest_angle_around(v, v) + margin;
-    std::size_t poor = 0;
-    for(Halfedge g : link)
-      poor += smallest_angle(position(m_mesh.source(g)), position(m_mesh.target(g)), x) < poor_angle ? 1 : 0;
+    const std::size_t poor = poor_triangles(link, x);
     std::optional<Location> best_location;
     for(const Location& l : {middle, halfway})
     {
@@ -196,6 +194,15 @@ private:
     bind_new_vertex(v, v, Vertex_kind::feature_vertex);
     track_faces_from(v);
     return true;
+  }
+
+  // How many triangles of `link` (their sides facing v) are below poor_angle with v at x.
+  std::size_t poor_triangles(const boost::container::small_vector<Halfedge, 16>& link, const Vector_3d& x) const
+  {
+    std::size_t poor = 0;
+    for(Halfedge g : link)
+      poor += smallest_angle(position(m_mesh.source(g)), position(m_mesh.target(g)), x) < poor_angle ? 1 : 0;
+    return poor;
   }
 
   // The smallest angle of the triangles of `link` (their sides facing v) once v moves from x to y,
@@ -249,9 +256,7 @@ private:
     const Vector_3d apex = (a + b) / 2 + (std::sqrt(3.0) / 2) * side.norm() * up.cross(side).normalized();
     const Vector_3d normal = m_reference.frame(m_state.closest[std::size_t(v)]).normal;
     double best = smallest_angle_around(v, v) + margin;
-    std::size_t poor = 0; // v's triangles below poor_angle: a move may not make more
-    for(Halfedge g : link)
-      poor += smallest_angle(position(m_mesh.source(g)), position(m_mesh.target(g)), x) < poor_angle ? 1 : 0;
+    const std::size_t poor = poor_triangles(link, x); // a move may not make more
     Vector_3d best_y = x;
     for(const Vector_3d& target : {centroid, Vector_3d((x + centroid) / 2), apex, Vector_3d((x + apex) / 2)})
     {
