@@ -1501,3 +1501,51 @@ TEST(Triangle_intersections, AfterConnectivityChangesAsCgalFindsThem)
   EXPECT_GT(found_some, 20u);
   EXPECT_GT(checked, 120u);
 }
+
+// A vertex a fraction of an ulp above another triangle in the unit box is written onto it when the
+// box is far from the origin: the exact tests decide on the points as written, as CGAL does on the
+// output. Both ways for the two triangles to meet: sharing no vertex, and sharing one.
+TEST(Triangle_intersections, DecidedOnThePointsAsWritten)
+{
+  // (lowest corner, side) of the box: far from the origin, at three scales.
+  const std::vector<std::pair<double, double> > boxes = {{1000, 1}, {3e4, 0.37}, {1e6, 3.1}};
+  for(const auto& box : boxes)
+    for(bool share_vertex : {false, true})
+    {
+      SCOPED_TRACE(std::to_string(box.first) + (share_vertex ? ", sharing a vertex" : ", sharing none"));
+      const std::vector<GR::Vector_3d> corners = {GR::Vector_3d::Constant(box.first),
+                                                  GR::Vector_3d::Constant(box.first + box.second)};
+      const GR::Unit_box_normalization normalization(corners);
+      // The triangle's vertices are input points, the apex a new vertex just above its plane.
+      const std::vector<GR::Vector_3d> input = {normalization.from_unit({-0.3, -0.3, 0.25}),
+                                                normalization.from_unit({0.3, -0.3, 0.25}),
+                                                normalization.from_unit({0, 0.3, 0.25})};
+      Work w;
+      std::vector<Work::Vertex_index> v;
+      for(const GR::Vector_3d& q : input)
+      {
+        const GR::Vector_3d p = normalization.to_unit(q);
+        v.push_back(w.add_vertex(Work::Point(p.x(), p.y(), p.z())));
+      }
+      const double z = w.point(v[0]).z();
+      ASSERT_TRUE(z == w.point(v[1]).z() && z == w.point(v[2]).z()); // a horizontal triangle
+      v.push_back(w.add_vertex(Work::Point(0, -0.1, std::nextafter(z, 1.0))));
+      v.push_back(w.add_vertex(Work::Point(0.2, 0.1, 0.45)));
+      w.add_face(v[0], v[1], v[2]);
+      w.add_face(v[3], v[4], share_vertex ? v[1] : w.add_vertex(Work::Point(-0.2, 0.1, 0.45)));
+      const GR::Output_points output(normalization, input);
+      for(std::size_t i = 0; i < 3; ++i)
+        EXPECT_EQ(output(i, GR::to_vector(w.point(v[i]))), input[i]); // the input's exact point
+      Work written = w;
+      for(Work::Vertex_index u : written.vertices())
+      {
+        const GR::Vector_3d p = output(std::size_t(u), GR::to_vector(w.point(u)));
+        written.point(u) = Work::Point(p.x(), p.y(), p.z());
+      }
+      ASSERT_EQ(written.point(v[3]).z(), written.point(v[0]).z()); // the apex written onto the plane
+      EXPECT_TRUE(GR::Triangle_intersections(w).all_pairs().empty());
+      const std::vector<Face_pair> expected = cgal_self_intersections(written);
+      EXPECT_EQ(expected.size(), 1u);
+      EXPECT_EQ(GR::Triangle_intersections(w, output).all_pairs(), expected);
+    }
+}

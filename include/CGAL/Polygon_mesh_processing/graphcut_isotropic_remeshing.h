@@ -214,7 +214,8 @@ remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<Trian
     options.target_edge_length > input_mean_length ? short_sharp_line_to_target * options.target_edge_length : 0;
   auto features = copy.features(work, ecm, face_patch, options.sharp_angle_bounds, crease_turn_angle,
                                 options.resampling, options.relax_constraints, shortest_sharp_line);
-  Graphcut_remesher remesher(work, input_mean_length, std::move(features.first), std::move(features.second), options);
+  Graphcut_remesher remesher(work, input_mean_length, std::move(features.first), std::move(features.second), options,
+                             copy.output_points());
   Graphcut_remeshing_statistics stats = remesher.run(listeners);
 #ifndef CGAL_NO_POSTCONDITIONS
   {

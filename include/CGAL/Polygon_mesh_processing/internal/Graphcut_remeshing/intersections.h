@@ -12,10 +12,14 @@
 // The list holds as long as no vertex drifts farther than the margin; the triangles of a vertex
 // that did, and those a connectivity change made, are put in the grid again and their pairs
 // found anew, so that the list is made once and then kept up to date at the cost of the changes.
+// The exact tests take the points the vertices will be written at (normalization.h's
+// Output_points); the boxes stay in the unit box, where, rounded outwards to single precision,
+// they hold the unit points of those too.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_INTERSECTIONS_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_INTERSECTIONS_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/normalization.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/parallel.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_pair_tests.h>
@@ -96,7 +100,10 @@ class Triangle_intersections
 public:
   using Face_pair = std::pair<Face, Face>; // first < second
 
-  explicit Triangle_intersections(const Work_mesh& m) : m_mesh(m) {}
+  // `output`: where the vertices of m will be written; by default, where they are.
+  explicit Triangle_intersections(const Work_mesh& m, Output_points output = Output_points())
+    : m_mesh(m), m_output(std::move(output))
+  {}
 
   // To be called when the mesh was replaced: the candidate list is made again.
   void invalidate() { m_valid = false; }
@@ -539,6 +546,12 @@ private:
     return std::size_t(h * 0x9E3779B97F4A7C15ull >> 20) & (m_buckets - 1);
   }
 
+  // Where a vertex will be written: the exact tests' points.
+  auto output_point() const
+  {
+    return [this](Vertex v) { return m_output(std::size_t(v), to_vector(m_mesh.point(v))); };
+  }
+
   // The intersecting pairs among the triangles around v with a queried one. When the fan is
   // embedded there are none; otherwise each such pair is tested.
   void fan_pairs(Vertex v, const std::vector<char>& query, std::vector<Face_pair>& found) const
@@ -552,7 +565,7 @@ private:
         fan.push_back({m_mesh.face(h), {{m_mesh.target(m_mesh.next(h)), m_mesh.source(h)}}});
         queried = queried || query[std::size_t(m_mesh.face(h))];
       }
-    if(!queried || fan.size() < 2 || is_embedded_fan(m_mesh, v, fan))
+    if(!queried || fan.size() < 2 || is_embedded_fan(output_point(), v, fan))
       return;
     for(std::size_t i = 0; i < fan.size(); ++i)
       for(std::size_t j = i + 1; j < fan.size(); ++j)
@@ -566,10 +579,11 @@ private:
   // Whether triangles f and g share a point they do not share through the mesh.
   bool intersect(Face f, Face g) const
   {
-    return triangles_intersect(m_mesh, m_triangles[std::size_t(f)], m_triangles[std::size_t(g)]);
+    return triangles_intersect(output_point(), m_triangles[std::size_t(f)], m_triangles[std::size_t(g)]);
   }
 
   const Work_mesh& m_mesh;
+  Output_points m_output;
   bool m_valid = false;                            // the grid and the candidate list exist
   bool m_reconnected = false;                      // triangles changed since they were updated
   double m_margin = 0;                             // how far boxes were grown

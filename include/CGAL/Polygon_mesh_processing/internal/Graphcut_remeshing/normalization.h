@@ -1,7 +1,8 @@
 // Copyright (c) 2026 the Graphcut_remeshing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The mesh is processed in a unit box (section 2.3: lambda_data and epsilon are meant for it).
+// The mesh is processed in a unit box (section 2.3: lambda_data and epsilon are meant for it), and
+// written back at the input's scale.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_NORMALIZATION_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_NORMALIZATION_H
@@ -9,7 +10,10 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -48,6 +52,43 @@ public:
 private:
   Vector_3d m_center = Vector_3d::Zero();
   double m_scale = 1;
+};
+
+// Where the vertices of the working mesh are written at the input's scale: a vertex still at the
+// unit point of its input point keeps the input's exact coordinates, any other unit point is
+// mapped back. Mapping back rounds: a vertex a fraction of an ulp above another sheet of the
+// surface in the unit box can be written through it. The exact tests of the intersections'
+// search decide on these points, so that what they find is what the output has. Without a
+// normalization, a vertex is written as it is.
+class Output_points
+{
+public:
+  Output_points() = default;
+
+  // `input` by working vertex index: the input's point of that vertex (the vertices the working
+  // copy made from the input's come first).
+  Output_points(const Unit_box_normalization& normalization, std::vector<Vector_3d> input)
+    : m_normalization(normalization), m_input(std::move(input)), m_mapped(true)
+  {}
+
+  // Whether working vertex v (by index) at unit point p is still at its input point.
+  bool at_input_point(std::size_t v, const Vector_3d& p) const
+  {
+    return m_mapped && v < m_input.size() && m_normalization.to_unit(m_input[v]) == p;
+  }
+
+  // The point written for working vertex v (by index) at unit point p.
+  Vector_3d operator()(std::size_t v, const Vector_3d& p) const
+  {
+    if(!m_mapped)
+      return p;
+    return at_input_point(v, p) ? m_input[v] : m_normalization.from_unit(p);
+  }
+
+private:
+  Unit_box_normalization m_normalization;
+  std::vector<Vector_3d> m_input;
+  bool m_mapped = false;
 };
 
 } // namespace Graphcut_remeshing

@@ -69,9 +69,11 @@ class Graphcut_remesher
 public:
   // `mesh` is the working mesh, already in the unit box, whose mean edge length is
   // `input_mean_length`; `feature_edge` (by edge index) holds the sharp, border and
-  // user-constrained edges, `kind` (by vertex index) what each vertex may do.
+  // user-constrained edges, `kind` (by vertex index) what each vertex may do; `output`, where the
+  // vertices will be written (the guarantees hold there).
   Graphcut_remesher(Work_mesh& mesh, double input_mean_length, std::vector<char> feature_edge,
-                    std::vector<Vertex_kind> kind, const Remeshing_options& options)
+                    std::vector<Vertex_kind> kind, const Remeshing_options& options,
+                    Output_points output = Output_points())
     : m_mesh(mesh), m_reference_mesh(mesh), m_reference(m_reference_mesh, options.sharp_angle_bounds.first),
       m_reference_feature_edge(std::move(feature_edge)), m_reference_kind(std::move(kind)),
       m_polylines(m_reference_mesh, m_reference_feature_edge, m_reference_kind), m_options(options),
@@ -82,7 +84,7 @@ public:
                m_sizing.resamples() ? resampling_weights(options.weights, m_sizing.tolerance, !m_sizing.target_asked_for)
                                    : options.weights),
       m_candidates(m_mesh, m_reference, m_polylines, m_state, m_energy, options.smoothing_step),
-      m_cut(m_mesh, m_energy), m_intersections(mesh)
+      m_cut(m_mesh, m_energy), m_intersections(mesh, std::move(output))
   {
     // The working mesh starts as the reference, index for index.
     m_tracking.start(m_reference_feature_edge, m_reference_kind);

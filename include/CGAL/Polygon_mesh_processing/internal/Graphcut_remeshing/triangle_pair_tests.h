@@ -3,7 +3,8 @@
 //
 // The exact tests of the intersections' search (intersections.h): whether two triangles of the mesh
 // meet beyond what they share, and whether a vertex fan is embedded, which spares the tests of its
-// pairs.
+// pairs. Both read the vertices' points through `points(v)` (a Vector_3d): the mesh's own, or
+// those it will be written at (normalization.h's Output_points).
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_TRIANGLE_PAIR_TESTS_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_TRIANGLE_PAIR_TESTS_H
@@ -39,29 +40,29 @@ using Vertex_fan =
 // sectors at v going at most once around it: the ray to a first rim vertex (an end of an open
 // fan) lies in no sector but the ones it bounds. Then two sectors share only v or a bounding
 // ray, each triangle projects one to one, and two triangles share only v or their common edge.
-inline bool is_embedded_fan(const Work_mesh& mesh, Work_mesh::Vertex_index v, const Vertex_fan& fan)
+template <typename Points>
+bool is_embedded_fan(const Points& points, Work_mesh::Vertex_index v, const Vertex_fan& fan)
 {
-  const Vector_3d p = to_vector(mesh.point(v));
+  const Vector_3d p = points(v);
   Vector_3d n = Vector_3d::Zero();
   for(const auto& t : fan)
-    n += area_vector(p, to_vector(mesh.point(t.second[0])), to_vector(mesh.point(t.second[1])));
+    n += area_vector(p, points(t.second[0]), points(t.second[1]));
   const int axis = std::abs(n[0]) >= std::abs(n[1]) ? (std::abs(n[0]) >= std::abs(n[2]) ? 0 : 2)
                                                      : (std::abs(n[1]) >= std::abs(n[2]) ? 1 : 2);
   const CGAL::Orientation positive = n[axis] > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
   const CGAL::Orientation negative = n[axis] > 0 ? CGAL::NEGATIVE : CGAL::POSITIVE;
   using Point_2 = std::array<double, 2>;
-  auto project = [&](Work_mesh::Vertex_index u) {
-    const auto& q = mesh.point(u);
+  auto project = [axis](const Vector_3d& q) {
     return axis == 0 ? Point_2{{q.y(), q.z()}} : (axis == 1 ? Point_2{{q.z(), q.x()}} : Point_2{{q.x(), q.y()}});
   };
-  const Point_2 o = project(v);
+  const Point_2 o = project(p);
   boost::container::small_vector<std::array<Point_2, 2>, 16> rim;
   // All orientations are of (o, a, b) with a and b on the rim: one error bound of CGAL's static
   // filter for orientation_2, from the largest coordinate differences to o, serves them all.
   double max_x = 0, max_y = 0;
   for(const auto& t : fan)
   {
-    rim.push_back({{project(t.second[0]), project(t.second[1])}});
+    rim.push_back({{project(points(t.second[0])), project(points(t.second[1]))}});
     for(const Point_2& q : rim.back())
     {
       max_x = (std::max)(max_x, std::abs(q[0] - o[0]));
@@ -108,14 +109,15 @@ inline bool is_embedded_fan(const Work_mesh& mesh, Work_mesh::Vertex_index v, co
   return true;
 }
 
-// Whether the triangles a and b of `mesh` (their vertices) share a point they do not share through
-// the mesh: for neighbours, a point other than their common vertex or edge.
-inline bool triangles_intersect(const Work_mesh& mesh, const std::array<Work_mesh::Vertex_index, 3>& a,
-                                const std::array<Work_mesh::Vertex_index, 3>& b)
+// Whether the triangles a and b (their vertices) share a point they do not share through the mesh:
+// for neighbours, a point other than their common vertex or edge.
+template <typename Points>
+bool triangles_intersect(const Points& points, const std::array<Work_mesh::Vertex_index, 3>& a,
+                         const std::array<Work_mesh::Vertex_index, 3>& b)
 {
   using Epick = Exact_predicates_kernel;
-  const auto point = [&mesh](Work_mesh::Vertex_index v) {
-    const auto& p = mesh.point(v);
+  const auto point = [&points](Work_mesh::Vertex_index v) {
+    const Vector_3d p = points(v);
     return Epick::Point_3(p.x(), p.y(), p.z());
   };
   // Put the shared vertices first, in the same order in both.

@@ -95,6 +95,15 @@ public:
   // A length of the mesh's units in the unit box.
   double to_unit_length(double length) const { return length * m_normalization.scale(); }
 
+  // Where the vertices of the working copy will be written.
+  Output_points output_points() const
+  {
+    std::vector<Vector_3d> input(m_input_vertices.size());
+    for(std::size_t i = 0; i < m_input_vertices.size(); ++i)
+      input[std::size_t(to_work(m_input_vertices[i]))] = m_input_points[i];
+    return Output_points(m_normalization, std::move(input));
+  }
+
   // By edge of the working copy: the sharp edges of eq. (8) (hysteresis bounds in degrees),
   // border edges, and the user's constrained edges (`ecm`), those as
   // constrained_feature_edge; the kinds of the vertices with them, where a border that
@@ -145,24 +154,26 @@ public:
     return {std::move(feature_edge), std::move(kind)};
   }
 
-  // Same connectivity: back to the input's scale, vertex by vertex. Vertices that never moved
-  // keep their exact input coordinates.
+  // Same connectivity: back to the input's scale, vertex by vertex (output_points()). Vertices
+  // that never moved keep their exact input coordinates.
   void copy_positions_back(const Work_mesh& work)
   {
+    const Output_points output = output_points();
     for(std::size_t i = 0; i < m_input_vertices.size(); ++i)
     {
-      const Vector_3d unit = to_vector(work.point(to_work(m_input_vertices[i])));
-      if(unit == m_normalization.to_unit(m_input_points[i]))
+      const std::size_t w = std::size_t(to_work(m_input_vertices[i]));
+      const Vector_3d unit = to_vector(work.point(Work_vertex(static_cast<Work_vertex::size_type>(w))));
+      if(output.at_input_point(w, unit))
         continue;
-      const Vector_3d p = m_normalization.from_unit(unit);
+      const Vector_3d p = output(w, unit);
       put(m_vpm, m_input_vertices[i], m_construct_point(p.x(), p.y(), p.z()));
     }
   }
 
   // New connectivity: the region's faces of `tmesh` are replaced by the working mesh's (changed
-  // to the input's scale), with the constrained maps updated. Feature and fixed vertices are never
-  // removed, so a working vertex of an input index still at its input position is that input
-  // vertex, and keeps its exact coordinates.
+  // to the input's scale: output_points()), with the constrained maps updated. Feature and fixed
+  // vertices are never removed, so a working vertex of an input index still at its input position
+  // is that input vertex, and keeps its exact coordinates.
   // `face_patch` takes, for each new face, the patch of the input face below it: the one from
   // which the working copy made the reference face `below[f]` (by working face; empty: no patches).
   template <typename EdgeConstrainedMap, typename VertexConstrainedMap, typename FacePatchMap>
@@ -174,12 +185,13 @@ public:
     patch.reserve(below.size());
     for(Work_mesh::Face_index r : below)
       patch.push_back(r == Work_mesh::null_face() ? Patch() : get(face_patch, m_input_face[std::size_t(r)]));
+    const Output_points output = output_points();
     std::vector<Point> exact(work.num_vertices());
     std::vector<char> is_exact(work.num_vertices(), 0);
     for(std::size_t i = 0; i < m_input_vertices.size(); ++i)
     {
       const Work_vertex w = to_work(m_input_vertices[i]);
-      if(!work.is_removed(w) && to_vector(work.point(w)) == m_normalization.to_unit(m_input_points[i]))
+      if(!work.is_removed(w) && output.at_input_point(std::size_t(w), to_vector(work.point(w))))
       {
         exact[std::size_t(w)] = get(m_vpm, m_input_vertices[i]);
         is_exact[std::size_t(w)] = 1;
@@ -187,7 +199,7 @@ public:
     }
     for(Work_vertex w : work.vertices())
     {
-      const Vector_3d p = m_normalization.from_unit(to_vector(work.point(w)));
+      const Vector_3d p = output(std::size_t(w), to_vector(work.point(w)));
       work.point(w) = Work_kernel::Point_3(p.x(), p.y(), p.z());
     }
     const std::function<void(Work_mesh::Face_index, face_descriptor)> put_patch =
