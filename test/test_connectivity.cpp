@@ -493,7 +493,7 @@ TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)
   {
     const double mean = GR::mean_edge_length(*m);
     const GR::Sizing_field sizing = GR::curvature_sizing(*m, Pass_setup::features_of(*m, true), mean, 35,
-                                                   GR::longest_to_mean_length, GR::gradation_at_mean_length);
+                                                         GR::longest_to_mean_length, GR::gradation_at_mean_length, true);
     ASSERT_TRUE(sizing.resamples());
     const std::vector<double> area = GR::vertex_areas(*m);
     double budget = 0, spent = 0;
@@ -514,7 +514,7 @@ TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)
   // The steeper grading of a length asked for: the gentle one of the mean length spreads the short
   // edges over most of this small sheet.
   const GR::Sizing_field sizing = GR::curvature_sizing(bent, Pass_setup::features_of(bent, true), GR::mean_edge_length(bent),
-                                                 35, GR::longest_to_mean_length, GR::sizing_gradation);
+                                                       35, GR::longest_to_mean_length, GR::sizing_gradation, false);
   double flat = 0, curved = 0;
   for(auto v : bent.vertices())
   {
@@ -527,6 +527,61 @@ TEST(Sizing, CurvatureSizingKeepsTheBudgetOfTheMeanLength)
   EXPECT_LT(curved, 0.9 * flat);
 }
 
+// The width of the strip between feature lines at a vertex: the distances along the edges to the
+// two lines that bound it, summed. On a sheet with lines along rows 0, 3 and 9 of its vertices, 3
+// between the first two lines and 6 between the last two (row 0 is not seen across row 3); beyond
+// the last line, no strip. On a thin plate, its side walls are strips as high as the plate; its
+// top and bottom faces are no strips narrower than the plate's side, near their corners neither.
+TEST(Sizing, StripWidthsAreMeasuredBetweenTheLinesThatBoundAStrip)
+{
+  for(double scale : {1e-3, 1.0, 1e3})
+  {
+    const Work sheet = to_work_mesh(make_grid(8, 12, [scale](std::size_t i, std::size_t j) {
+      return Point(scale * double(i), scale * double(j), 0);
+    }));
+    auto row = [&](Work::Vertex_index v) { return std::lround(sheet.point(v).y() / scale); };
+    std::vector<char> feature(sheet.num_edges(), 0);
+    for(auto e : sheet.edges())
+    {
+      const long r = row(sheet.vertex(e, 0));
+      feature[std::size_t(e)] = r == row(sheet.vertex(e, 1)) && (r == 0 || r == 3 || r == 9);
+    }
+    const std::vector<double> width = GR::feature_strip_widths(sheet, feature);
+    for(auto v : sheet.vertices())
+    {
+      const long r = row(v);
+      if(r > 9)
+        EXPECT_FALSE(std::isfinite(width[std::size_t(v)])) << "row " << r;
+      else
+        EXPECT_NEAR(width[std::size_t(v)], scale * (r <= 3 ? 3 : 6), 1e-9 * scale) << "row " << r;
+    }
+
+    const double side = scale, height = 0.25 * scale;
+    const Work plate = to_work_mesh(jittered_box(side, side, height, 6, 3));
+    const std::vector<double> plate_width = GR::feature_strip_widths(plate, Pass_setup::features_of(plate, true));
+    std::size_t walls = 0;
+    for(auto v : plate.vertices())
+    {
+      const auto& p = plate.point(v);
+      auto at = [scale](double x, double y) { return std::abs(x - y) < 1e-9 * scale; };
+      const bool rim_x = at(p.x(), 0) || at(p.x(), side), rim_y = at(p.y(), 0) || at(p.y(), side);
+      const bool rim_z = at(p.z(), 0) || at(p.z(), height);
+      const double w = plate_width[std::size_t(v)];
+      if(!rim_z && (rim_x != rim_y))
+      {
+        ++walls;
+        EXPECT_GE(w, height * (1 - 1e-9));
+        EXPECT_LE(w, 3 * height);
+      }
+      else if(rim_z && !rim_x && !rim_y)
+      {
+        EXPECT_GE(w, side * (1 - 1e-9));
+      }
+    }
+    EXPECT_EQ(walls, std::size_t(4 * 5 * 5));
+  }
+}
+
 // Re-sampling passes bring the edges near their targets, coarser or finer than the input (four
 // times fewer or more vertices for twice or half the length), and keep every guarantee.
 TEST(Connectivity_pass, ResamplingBringsTheEdgesToTheirTargets)
@@ -537,7 +592,7 @@ TEST(Connectivity_pass, ResamplingBringsTheEdgesToTheirTargets)
       Pass_setup s(input.mesh);
       const double mean = GR::mean_edge_length(s.reference_mesh);
       s.sizing = GR::curvature_sizing(s.reference_mesh, s.reference_feature_edge, factor * mean, 35,
-                                      GR::longest_to_mean_length, GR::gradation_at_mean_length);
+                                      GR::longest_to_mean_length, GR::gradation_at_mean_length, false);
       const std::string name = input.name + " x" + std::to_string(factor);
       for(int pass = 0; pass < 4; ++pass)
       {
@@ -1127,7 +1182,7 @@ TEST(Connectivity_pass, ResamplingRelaxationKeepsTheTrianglesWithinTheTolerance)
   {
     Pass_setup s(*input);
     s.sizing = GR::curvature_sizing(s.reference_mesh, s.reference_feature_edge, GR::mean_edge_length(s.reference_mesh), 35,
-                                    GR::longest_to_mean_length, GR::gradation_at_mean_length);
+                                    GR::longest_to_mean_length, GR::gradation_at_mean_length, true);
     const Work start = s.mesh;
     const std::size_t moved = GR::Relaxation(s.operations_with_features(), [&start](Work::Vertex_index u, const GR::Vector_3d& x, double) {
       return (x - GR::to_vector(start.point(u))).squaredNorm();

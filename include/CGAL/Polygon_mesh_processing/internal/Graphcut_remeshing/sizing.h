@@ -7,6 +7,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_SIZING_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_SIZING_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/feature_strips.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/reference_surface.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/remeshing_options.h>
@@ -174,6 +175,19 @@ inline std::vector<double> vertex_areas(const Work_mesh& m)
   return area;
 }
 
+// How many vertices a vertex of the reference that samples `area` of the surface costs at the
+// target length t when it lies on a strip `width` wide between two feature lines: area / t^2 where
+// the strip is wider than t. On a narrower strip each of its lines keeps a vertex every t, so that
+// the cost grows towards area / (t w); the field takes only a part of that growth, the exponent:
+// the lines are shared between strips and the feature-line collapses merge their short segments
+// (the manual, "Re-sampling"). The width counts as at least half the mean length.
+constexpr double strip_count_exponent = 0.375;
+inline double sampled_vertices(double area, double t, double width, double mean_length)
+{
+  const double across = (std::max)(0.5 * mean_length, (std::min)(t, width));
+  return area / (t * t) * std::pow(t / across, strip_count_exponent);
+}
+
 // Lowers the target lengths so that they grow by at most `gradation` times the distance along
 // the edges (a Dijkstra from the shortest): neighbouring triangles then differ little in size.
 inline void grade_sizing(const Work_mesh& m, double gradation, std::vector<double>& length)
@@ -249,11 +263,15 @@ inline Sizing_field tolerance_sizing(const Work_mesh& m, const std::vector<char>
 // times the mean length, graded; the tolerance is chosen so that the field asks for as many
 // triangles as the mean length would everywhere (sum of area / l^2), so that the vertex count
 // stays the input's while the curved parts get the short edges and the flat parts the long ones.
+// With `count_strips` (at the input's density), a strip between feature lines narrower than its
+// target counts more (sampled_vertices()), so that the field lengthens its targets elsewhere.
 inline Sizing_field curvature_sizing(const Work_mesh& m, const std::vector<char>& feature_edge, double mean_length,
-                               double corner_angle, double longest, double gradation)
+                                     double corner_angle, double longest, double gradation, bool count_strips)
 {
   const std::vector<double> radius = smooth_edge_radii(m, feature_edge, corner_angle);
   const std::vector<double> area = vertex_areas(m);
+  const std::vector<double> width = count_strips ? feature_strip_widths(m, feature_edge)
+                                                 : std::vector<double>(m.num_vertices(), std::numeric_limits<double>::infinity());
   double budget = 0;
   for(Work_mesh::Vertex_index v : m.vertices())
     budget += area[std::size_t(v)] / (mean_length * mean_length);
@@ -268,7 +286,7 @@ inline Sizing_field curvature_sizing(const Work_mesh& m, const std::vector<char>
       const double l = resampling_chord(tolerance, radius[std::size_t(v)]);
       double& t = sizing.target[std::size_t(v)];
       t = (std::max)(0.5 * mean_length, (std::min)(longest * mean_length, l));
-      count += area[std::size_t(v)] / (t * t);
+      count += sampled_vertices(area[std::size_t(v)], t, width[std::size_t(v)], mean_length);
     }
     return count;
   };
@@ -287,7 +305,7 @@ inline Sizing_field curvature_sizing(const Work_mesh& m, const std::vector<char>
   // Grading only shortens: scale the field back to the budget.
   double count = 0;
   for(Work_mesh::Vertex_index v : m.vertices())
-    count += area[std::size_t(v)] / (sizing.target[std::size_t(v)] * sizing.target[std::size_t(v)]);
+    count += sampled_vertices(area[std::size_t(v)], sizing.target[std::size_t(v)], width[std::size_t(v)], mean_length);
   const double stretch = budget > 0 && count > 0 ? std::sqrt(count / budget) : 1;
   for(double& t : sizing.target)
     t *= stretch;
@@ -317,7 +335,7 @@ inline Sizing_field make_sizing_field(const Work_mesh& reference, const std::vec
     Sizing_field sizing =
       curvature_sizing(reference, feature_edge, length, options.sharp_angle_bounds.second,
                        asked ? longest_to_asked_target : longest_to_mean_length,
-                       asked ? sizing_gradation : gradation_at_mean_length);
+                       asked ? sizing_gradation : gradation_at_mean_length, !asked);
     sizing.target_asked_for = sizing.into_lines = asked;
     sizing.covers_reference = asked && length >= covering_length_ratio * input_mean_length;
     return sizing;
