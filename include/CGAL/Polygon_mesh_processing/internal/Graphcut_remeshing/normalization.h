@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -66,29 +65,28 @@ public:
   Output_points() = default;
 
   // `input` by working vertex index: the input's point of that vertex (the vertices the working
-  // copy made from the input's come first).
-  Output_points(const Unit_box_normalization& normalization, std::vector<Vector_3d> input)
-    : m_normalization(normalization), m_input(std::move(input)), m_mapped(true)
+  // copy made from the input's come first); it must outlive this.
+  Output_points(const Unit_box_normalization& normalization, const std::vector<Vector_3d>& input)
+    : m_normalization(normalization), m_input(&input)
   {}
 
   // Whether working vertex v (by index) at unit point p is still at its input point.
   bool at_input_point(std::size_t v, const Vector_3d& p) const
   {
-    return m_mapped && v < m_input.size() && m_normalization.to_unit(m_input[v]) == p;
+    return m_input != nullptr && v < m_input->size() && m_normalization.to_unit((*m_input)[v]) == p;
   }
 
   // The point written for working vertex v (by index) at unit point p.
   Vector_3d operator()(std::size_t v, const Vector_3d& p) const
   {
-    if(!m_mapped)
+    if(m_input == nullptr)
       return p;
-    return at_input_point(v, p) ? m_input[v] : m_normalization.from_unit(p);
+    return at_input_point(v, p) ? (*m_input)[v] : m_normalization.from_unit(p);
   }
 
 private:
   Unit_box_normalization m_normalization;
-  std::vector<Vector_3d> m_input;
-  bool m_mapped = false;
+  const std::vector<Vector_3d>* m_input = nullptr;
 };
 
 } // namespace Graphcut_remeshing

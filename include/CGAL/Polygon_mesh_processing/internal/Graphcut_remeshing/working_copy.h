@@ -77,6 +77,7 @@ public:
         m_input_points.push_back(to_vector(get(m_vpm, v)));
       }
     m_normalization = Unit_box_normalization(m_input_points);
+    CGAL_precondition(work.number_of_vertices() == 0); // working vertex i is the i-th added
     work.reserve(static_cast<Work_mesh::size_type>(m_input_vertices.size()),
                  static_cast<Work_mesh::size_type>(3 * m_region.size() / 2 + m_input_vertices.size()),
                  static_cast<Work_mesh::size_type>(m_region.size()));
@@ -95,14 +96,8 @@ public:
   // A length of the mesh's units in the unit box.
   double to_unit_length(double length) const { return length * m_normalization.scale(); }
 
-  // Where the vertices of the working copy will be written.
-  Output_points output_points() const
-  {
-    std::vector<Vector_3d> input(m_input_vertices.size());
-    for(std::size_t i = 0; i < m_input_vertices.size(); ++i)
-      input[std::size_t(to_work(m_input_vertices[i]))] = m_input_points[i];
-    return Output_points(m_normalization, std::move(input));
-  }
+  // Where the vertices of the working copy will be written (while this copy lives).
+  Output_points output_points() const { return Output_points(m_normalization, m_input_points); }
 
   // By edge of the working copy: the sharp edges of eq. (8) (hysteresis bounds in degrees),
   // border edges, and the user's constrained edges (`ecm`), those as
@@ -389,6 +384,18 @@ private:
       m_on_seam.push_back(on_seam ? 1 : 0);
       m_constrained_vertex.push_back(on_seam || get(vcm, m_input_vertices[i]) ? 1 : 0);
     }
+    // The input's vertices and points by working vertex, as output_points() reads them.
+    std::vector<vertex_descriptor> vertices;
+    std::vector<Vector_3d> points;
+    vertices.reserve(order.size());
+    points.reserve(order.size());
+    for(std::size_t i : order)
+    {
+      vertices.push_back(m_input_vertices[i]);
+      points.push_back(m_input_points[i]);
+    }
+    m_input_vertices.swap(vertices);
+    m_input_points.swap(points);
   }
 
   void add_faces(Work_mesh& work)
@@ -421,8 +428,8 @@ private:
   bool m_whole = true;                        // the region is the whole mesh
   std::vector<std::pair<Work_vertex, Work_vertex> > m_seam_edges;
   std::vector<char> m_on_seam;                // by working vertex: shared with faces outside the region
-  std::vector<vertex_descriptor> m_input_vertices; // the region's
-  std::vector<Vector_3d> m_input_points;      // as the input has them
+  std::vector<vertex_descriptor> m_input_vertices; // the region's, by working vertex
+  std::vector<Vector_3d> m_input_points;      // as the input has them, by working vertex
   Unit_box_normalization m_normalization;
   std::vector<Work_vertex> m_work_vertex;     // by the input's vertex index
   std::vector<char> m_constrained_vertex;     // by working vertex: the user's fixed vertices and the seam's
