@@ -839,6 +839,61 @@ TEST(Connectivity_pass, SmallestAngleRepairSlidesAVertexAwayFromACorner)
   }
 }
 
+// Two thin triangles that only the repair's own rules mend, at every scale: a free vertex crowded
+// against a vertex of a box's edge goes into it (the re-sampling at the input's density keeps
+// free ends off the lines), and a flat quad's long diagonal is flipped though its ends, on the
+// border, are then left with one triangle each.
+TEST(Connectivity_pass, SmallestAngleRepairCollapsesIntoLinesAndFlipsAtBorders)
+{
+  const auto worst_angle = [](const Pass_setup& s) {
+    double worst = GR::pi;
+    for(auto f : s.mesh.faces())
+    {
+      const auto t = GR::face_vertices(s.mesh, f);
+      worst = (std::min)(worst, GR::smallest_angle(s.point(t[0]), s.point(t[1]), s.point(t[2])));
+    }
+    return worst;
+  };
+  for(double scale : {1e-3, 1.0, 1e3})
+  {
+    const std::string name = "at scale " + std::to_string(scale);
+    // Targets three times the mean edge length: v's far neighbours may then join w.
+    Pass_setup box(to_work_mesh(jittered_box(scale, scale, scale, 4, 7)), 3.0);
+    Work::Vertex_index v, w;
+    for(auto h : box.mesh.halfedges())
+      if(box.state.kind[std::size_t(box.mesh.source(h))] == GR::Vertex_kind::free_vertex &&
+         box.state.kind[std::size_t(box.mesh.target(h))] == GR::Vertex_kind::feature_vertex)
+      {
+        v = box.mesh.source(h);
+        w = box.mesh.target(h);
+        break;
+      }
+    ASSERT_NE(v, Work::null_vertex()) << name;
+    // Along the edge to w, in the plane of v's face: still on the reference.
+    const GR::Vector_3d crowded = box.point(w) + 0.05 * (box.point(v) - box.point(w));
+    box.mesh.point(v) = Work::Point(crowded.x(), crowded.y(), crowded.z());
+    const Work before = box.mesh;
+    const double worst_before = worst_angle(box);
+    GR::Local_operations operations = box.operations_with_features();
+    EXPECT_GE(GR::Smallest_angle_repair(operations, false, true, false).run().collapses, 1u) << name;
+    EXPECT_TRUE(box.mesh.is_removed(v) || box.mesh.is_removed(w)) << name;
+    EXPECT_GT(worst_angle(box), 3 * worst_before) << name;
+    expect_pass_guarantees(box, before, "box " + name);
+
+    // The quad (a, d, b, c), its diagonal ab ten times its height: 11.3 degrees at a and b.
+    Work m;
+    const auto a = m.add_vertex(Work::Point(0, 0, 0)), b = m.add_vertex(Work::Point(2 * scale, 0, 0));
+    const auto c = m.add_vertex(Work::Point(scale, 0.2 * scale, 0)), d = m.add_vertex(Work::Point(scale, -0.2 * scale, 0));
+    m.add_face(a, b, c);
+    m.add_face(b, a, d);
+    Pass_setup quad(m);
+    const double quad_before = worst_angle(quad);
+    EXPECT_EQ(GR::Smallest_angle_repair(quad.operations(), true, false, false).run().flips, 1u) << name;
+    EXPECT_NE(quad.mesh.halfedge(c, d), Work::null_halfedge()) << name;
+    EXPECT_GT(worst_angle(quad), 1.9 * quad_before) << name;
+  }
+}
+
 // Collapses happen only on short edges whose both ends are off features and in flat regions.
 TEST(Connectivity_pass, CollapsesStayAwayFromFeaturesAndCurvedParts)
 {

@@ -122,7 +122,8 @@ public:
     const Halfedge h = m_mesh.halfedge(e);
     double smallest = -1;
     Plan plan;
-    if(!best_collapse(e, plan.collapse, smallest, 0.5 * smallest_angle_around(m_mesh.source(h), m_mesh.target(h))))
+    if(!best_collapse(e, plan.collapse, smallest, 0.5 * smallest_angle_around(m_mesh.source(h), m_mesh.target(h)),
+                      m_sizing.into_lines))
       return Plan();
     plan.gain = gain;
     return plan;
@@ -140,8 +141,9 @@ public:
   // The way to collapse e that keeps the best triangles, and the smallest angle of its triangles;
   // false when e may not be collapsed (a constrained or frozen edge, a vertex that would lose too
   // many edges, two feature edges merging, a link condition broken, no acceptable way with no
-  // angle below `least_angle`).
-  bool best_collapse(Edge e, Collapse& best, double& smallest, double least_angle) const
+  // angle below `least_angle`). With `free_into_lines`, a free edge with one end on a feature line or
+  // fixed may collapse into that end.
+  bool best_collapse(Edge e, Collapse& best, double& smallest, double least_angle, bool free_into_lines) const
   {
     const char feature = m_state.feature_edge[std::size_t(e)];
     const Halfedge h = m_mesh.halfedge(e);
@@ -149,11 +151,11 @@ public:
     if(feature == constrained_feature_edge || is_frozen(a) || is_frozen(b))
       return false;
     const Vector_3d pa = position(a), pb = position(b);
-    // When the user asked for a density: a free edge with one end on a feature line or fixed, the
-    // free end goes to the other, which stays where it is. A coarse target needs these collapses
-    // (without them the lines' neighbours hold their vertices); at the input's density they only
-    // thin the triangles next to the lines (the manual, "A Density and a Region").
-    const bool into_feature = m_sizing.into_lines && !feature && is_free(a) != is_free(b);
+    // A free edge with one end on a feature line or fixed: the free end goes to the other, which
+    // stays where it is. A coarse target needs these collapses (without them the lines'
+    // neighbours hold their vertices); at the input's density the re-sampling's would only thin
+    // the triangles next to the lines (the manual, "A Density and a Region").
+    const bool into_feature = free_into_lines && !feature && is_free(a) != is_free(b);
     // The ways to collapse e: where the kept vertex goes.
     boost::container::small_vector<Collapse, 3> trials;
     if(into_feature)

@@ -103,8 +103,9 @@ public:
   }
 
   // Whether e may be flipped: off the features and the border, its vertices not frozen, its
-  // ends keeping three edges, the new edge not there already.
-  bool flippable(Edge e) const
+  // ends keeping three edges (two on a border, one triangle, with `border_ends_of_one_triangle`),
+  // the new edge not there already.
+  bool flippable(Edge e, bool border_ends_of_one_triangle = false) const
   {
     if(m_state.feature_edge[std::size_t(e)] || m_mesh.is_border(e))
       return false;
@@ -114,8 +115,10 @@ public:
     for(Vertex u : {a, b, c, d})
       if(is_frozen(u))
         return false;
-    return c != d && m_mesh.halfedge(c, d) == Work_mesh::null_halfedge() && m_mesh.degree(a) >= 4 &&
-           m_mesh.degree(b) >= 4;
+    for(Vertex u : {a, b})
+      if(m_mesh.degree(u) < (border_ends_of_one_triangle && m_mesh.is_border(u) ? 3u : 4u))
+        return false;
+    return c != d && m_mesh.halfedge(c, d) == Work_mesh::null_halfedge();
   }
 
   // Flips e; returns the vertices of its two triangles.

@@ -26,9 +26,11 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Graphcut_remeshing {
 
-// The triangles with an angle below `poor_angle`, worst first: a flip of one of their edges or a
-// collapse of one (as the re-sampling collapses do, along its line for a feature edge), whichever
-// leaves the larger smallest angle; then a move of their free vertices towards the centroid of
+// The triangles with an angle below `poor_angle`, worst first: a flip of one of their edges (which
+// may leave a border vertex with one triangle) or a collapse of one (as the re-sampling collapses
+// do, along its line for a feature edge, and also a free end into a vertex on a line or a corner,
+// which the re-sampling at the input's density does not make), whichever leaves the larger
+// smallest angle; then a move of their free vertices towards the centroid of
 // their neighbours or towards the apex that would make their worst triangle equilateral, in the
 // tangent plane and onto the reference, and a slide of their vertices on feature lines towards
 // the middle of their line neighbours. An operation is taken only when
@@ -85,7 +87,7 @@ private:
       return Plan();
     Plan p;
     double best = -1;
-    if(m_flip && Edge_flips(*this).flippable(e))
+    if(m_flip && Edge_flips(*this).flippable(e, true))
     {
       const double flipped = Edge_flips(*this).flipped_smallest_angle(e);
       if(flipped > on_e + margin)
@@ -98,7 +100,7 @@ private:
     double collapsed = -1;
     const Halfedge h = m_mesh.halfedge(e);
     const double least_angle = (std::max)(best, smallest_angle_around(m_mesh.source(h), m_mesh.target(h)) + margin);
-    if(m_collapse && Edge_collapses(*this).best_collapse(e, c, collapsed, least_angle) && collapsed > least_angle)
+    if(m_collapse && Edge_collapses(*this).best_collapse(e, c, collapsed, least_angle, true) && collapsed > least_angle)
     {
       best = collapsed;
       p.flip = false;
