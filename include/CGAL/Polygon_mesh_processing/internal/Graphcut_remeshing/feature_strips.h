@@ -9,10 +9,9 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_FEATURE_STRIPS_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_FEATURE_STRIPS_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/triangle_geometry.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
-
-#include <CGAL/Union_find.h>
 
 #include <algorithm>
 #include <array>
@@ -28,49 +27,30 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace Graphcut_remeshing {
 
-// The lines of sharp edges of a mesh: feature edges meeting at a vertex that has exactly two of
-// them (a line passing through) are on one line; lines part at corners and ends, the vertices
-// with another number of feature edges, which are the lines' ends.
+// The lines of sharp edges of a mesh, as walk_sharp_line() follows them: feature edges meeting at
+// a vertex that has exactly two of them (a line passing through) are on one line; lines part at
+// corners and ends, the vertices with another number of feature edges, which are the lines' ends.
 struct Feature_lines
 {
   static constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
 
-  Feature_lines(const Work_mesh& m, const std::vector<char>& feature_edge)
-    : label(m.num_edges(), none), ends(m.num_edges(), {{none, none}})
+  Feature_lines(const Work_mesh& m, const std::vector<char>& feature_edge) : label(m.num_edges(), none)
   {
-    std::vector<int> degree(m.num_vertices(), 0);
+    std::vector<int> feature_degree(m.num_vertices(), 0);
     for(Work_mesh::Edge_index e : m.edges())
       if(feature_edge[std::size_t(e)])
         for(Work_mesh::Vertex_index v : {m.vertex(e, 0), m.vertex(e, 1)})
-          ++degree[std::size_t(v)];
-    CGAL::Union_find<std::size_t> lines;
-    std::vector<CGAL::Union_find<std::size_t>::handle> line_of(m.num_edges());
-    for(std::size_t e = 0; e < m.num_edges(); ++e)
-      if(feature_edge[e])
-        line_of[e] = lines.make_set(e);
-    for(Work_mesh::Vertex_index v : m.vertices())
-    {
-      if(degree[std::size_t(v)] != 2)
-        continue;
-      std::size_t previous = none;
-      for(Work_mesh::Halfedge_index h : halfedges_around_target(m.halfedge(v), m))
-        if(feature_edge[std::size_t(m.edge(h))])
-        {
-          if(previous != none)
-            lines.unify_sets(line_of[previous], line_of[std::size_t(m.edge(h))]);
-          previous = std::size_t(m.edge(h));
-        }
-    }
-    for(Work_mesh::Edge_index e : m.edges())
-    {
-      if(!feature_edge[std::size_t(e)])
-        continue;
-      const std::size_t l = *lines.find(line_of[std::size_t(e)]);
-      label[std::size_t(e)] = l;
-      for(Work_mesh::Vertex_index v : {m.vertex(e, 0), m.vertex(e, 1)})
-        if(degree[std::size_t(v)] != 2)
-          ends[l][ends[l][0] == none || ends[l][0] == std::size_t(v) ? 0 : 1] = std::size_t(v);
-    }
+          ++feature_degree[std::size_t(v)];
+    const auto degree = [&](Work_mesh::Vertex_index v) { return feature_degree[std::size_t(v)]; };
+    for_each_sharp_line(m, feature_edge, degree, [&](const Sharp_line<Work_mesh>& line) {
+      std::array<std::size_t, 2> line_ends{{none, none}};
+      const Work_mesh::Vertex_index first = m.source(line.halfedges.front()), last = m.target(line.halfedges.back());
+      if(degree(first) != 2)
+        line_ends = {{std::size_t(first), std::size_t(last)}}; // an open line
+      for(Work_mesh::Halfedge_index h : line.halfedges)
+        label[std::size_t(m.edge(h))] = ends.size();
+      ends.push_back(line_ends);
+    });
   }
 
   // Whether lines a and b end at one vertex: two sides of a corner, not two sides of a strip.

@@ -200,6 +200,19 @@ Sharp_line<Mesh> walk_sharp_line(const Mesh& m, typename Mesh::Halfedge_index st
   return line;
 }
 
+// Calls f on each sharp line of m (walk_sharp_line()): each open one from one of its ends or
+// junctions, then the closed ones from anywhere.
+template <typename Mesh, typename Degree, typename F>
+void for_each_sharp_line(const Mesh& m, const std::vector<char>& sharp, const Degree& degree, const F& f)
+{
+  std::vector<char> seen(m.number_of_edges(), 0);
+  for(bool closed : {false, true})
+    for(auto start : m.halfedges())
+      if(sharp[std::size_t(m.edge(start))] && !seen[std::size_t(m.edge(start))] &&
+         (closed || degree(m.source(start)) != 2))
+        f(walk_sharp_line(m, start, sharp, degree, seen));
+}
+
 template <typename Mesh>
 void drop_short_sharp_lines(const Mesh& m, double shortest, std::vector<char>& sharp)
 {
@@ -211,18 +224,11 @@ void drop_short_sharp_lines(const Mesh& m, double shortest, std::vector<char>& s
   };
   for(;;)
   {
-    std::vector<char> seen(m.number_of_edges(), 0);
     std::vector<Sharp_line<Mesh> > short_lines;
-    // Each line from one of its ends or junctions, then the closed ones from anywhere.
-    for(bool closed : {false, true})
-      for(auto start : m.halfedges())
-        if(sharp[std::size_t(m.edge(start))] && !seen[std::size_t(m.edge(start))] &&
-           (closed || degree(m.source(start)) != 2))
-        {
-          Sharp_line<Mesh> line = walk_sharp_line(m, start, sharp, degree, seen);
-          if(line.length < shortest && !line.at_cone)
-            short_lines.push_back(std::move(line));
-        }
+    for_each_sharp_line(m, sharp, degree, [&](Sharp_line<Mesh> line) {
+      if(line.length < shortest && !line.at_cone)
+        short_lines.push_back(std::move(line));
+    });
     std::stable_sort(short_lines.begin(), short_lines.end(),
                      [](const Sharp_line<Mesh>& a, const Sharp_line<Mesh>& b) { return a.length < b.length; });
     std::vector<char> junction_used(m.number_of_vertices(), 0);
