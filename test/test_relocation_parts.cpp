@@ -9,6 +9,7 @@
 
 #include <CGAL/Polygon_mesh_processing/graphcut_remeshing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/candidates.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/distance_bound.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/normalization.h>
@@ -24,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <type_traits>
@@ -720,6 +722,149 @@ TEST(Closest_point_on_triangle, DegenerateTriangles)
       << b.transpose() << ", c = " << c.transpose() << ", p = " << p.transpose() << ", area "
       << GR::area_vector(a, b, c).norm() / 2;
     EXPECT_NEAR(w[0] + w[1] + w[2], 1.0, 1e-12);
+  }
+}
+
+// ------------------------------------------------------------------------------------------------
+
+namespace {
+
+// The largest distance from a dense grid of samples of t to the triangles (a lower bound of the
+// true largest distance, below it by at most the grid's spacing).
+double sampled_distance(const GR::Triangle_3d& t, const std::vector<GR::Triangle_3d>& to, int n = 40)
+{
+  double largest = 0;
+  for(int i = 0; i <= n; ++i)
+    for(int j = 0; i + j <= n; ++j)
+    {
+      const double u = double(i) / n, v = double(j) / n;
+      largest = (std::max)(largest, GR::distance_to_triangles((1 - u - v) * t[0] + u * t[1] + v * t[2], to));
+    }
+  return largest;
+}
+
+std::vector<GR::Triangle_3d> mesh_triangles(const Work_mesh& m)
+{
+  std::vector<GR::Triangle_3d> triangles;
+  for(auto f : m.faces())
+  {
+    const auto v = GR::face_vertices(m, f);
+    triangles.push_back(GR::Triangle_3d{{vec(m.point(v[0])), vec(m.point(v[1])), vec(m.point(v[2]))}});
+  }
+  return triangles;
+}
+
+// The triangles around v with v at x.
+std::vector<GR::Triangle_3d> star(const Work_mesh& m, Work_mesh::Vertex_index v, const Vector_3d& x)
+{
+  std::vector<GR::Triangle_3d> triangles;
+  for(auto h : CGAL::halfedges_around_target(m.halfedge(v), m))
+    if(!m.is_border(h))
+      triangles.push_back(GR::Triangle_3d{{x, vec(m.point(m.target(m.next(h)))), vec(m.point(m.source(h)))}});
+  return triangles;
+}
+
+} // namespace
+
+TEST(Distance_bound, TrianglesOverASquare)
+{
+  for(double scale : {1e-3, 1.0, 1e3})
+  {
+    const Work_mesh square = to_work_mesh(make_grid(9, 9, [scale](std::size_t i, std::size_t j) {
+      return Point(scale * double(i) / 8, scale * double(j) / 8, 0);
+    }));
+    const double bound = 0.01 * scale;
+    const GR::Distance_bound check(square, bound);
+    auto above = [&](double height, double out) {
+      const GR::Triangle_3d t{{Vector_3d(0.3 * scale, 0.2 * scale, height), Vector_3d(1 * scale + out, 0.4 * scale, height),
+                               Vector_3d(0.45 * scale, 0.9 * scale, height)}};
+      return check.near_input({t});
+    };
+    for(double h : {0.0, 0.5, 0.99})
+      EXPECT_TRUE(above(h * bound, 0)) << "height " << h << " scale " << scale;
+    for(double h : {1.01, 2.0})
+      EXPECT_FALSE(above(h * bound, 0)) << "height " << h << " scale " << scale;
+    // Beyond the square's border, in its plane: the distance is the overhang.
+    EXPECT_TRUE(above(0, 0.9 * bound));
+    EXPECT_TRUE(above(0.6 * bound, 0.7 * bound)); // sqrt(0.36 + 0.49) < 1
+    EXPECT_FALSE(above(0, 1.1 * bound));
+    EXPECT_FALSE(above(0.8 * bound, 0.7 * bound));
+  }
+}
+
+// The answer yes is never wrong: the triangles said to be within the bound are, by a dense
+// sampling; and the answer is tight: triangles within 0.8 times the bound are nearly all accepted.
+TEST(Distance_bound, NearTheInputOnlyWhenWithinTheBound)
+{
+  CGAL::Random rng(31);
+  const Work_mesh sphere = to_work_mesh(make_sphere(2));
+  const std::vector<GR::Triangle_3d> input = mesh_triangles(sphere);
+  const double bound = 0.02;
+  const GR::Distance_bound check(sphere, bound);
+  int yes = 0, refused_well_within = 0, well_within = 0;
+  for(int trial = 0; trial < 300; ++trial)
+  {
+    const Vector_3d n = random_unit(rng);
+    const Vector_3d u = n.unitOrthogonal(), w = n.cross(u);
+    const double size = rng.get_double(0.05, 0.3), offset = rng.get_double(-1.5 * bound, 1.2 * bound);
+    GR::Triangle_3d t;
+    for(int k = 0; k < 3; ++k)
+    {
+      const double angle = 2 * GR::pi * k / 3 + rng.get_double(-0.5, 0.5);
+      t[k] = (1 + offset) * n + size * (std::cos(angle) * u + std::sin(angle) * w);
+    }
+    const double sampled = sampled_distance(t, input);
+    const bool answer = check.near_input({t});
+    yes += answer;
+    if(answer)
+    {
+      EXPECT_LE(sampled, bound) << "trial " << trial;
+    }
+    if(sampled <= 0.8 * bound)
+    {
+      ++well_within;
+      refused_well_within += !answer;
+    }
+  }
+  std::cout << yes << " accepted, " << refused_well_within << " of " << well_within << " within 0.8 times refused\n";
+  EXPECT_GT(yes, 30);
+  EXPECT_GT(well_within, 30);
+  EXPECT_LE(refused_well_within, well_within / 20);
+}
+
+// A vertex of a flat grid lifted off it: the input below it stays covered while the star's
+// triangles pass within the bound of it.
+TEST(Distance_bound, InputCoveredByTheTrianglesThatReplaceAStar)
+{
+  for(double scale : {1e-2, 1.0, 1e2})
+  {
+    const Work_mesh grid = to_work_mesh(make_grid(7, 7, [scale](std::size_t i, std::size_t j) {
+      return Point(scale * double(i) / 6, scale * double(j) / 6, 0);
+    }));
+    const Work_mesh::Vertex_index centre(24);
+    ASSERT_EQ(vec(grid.point(centre)), Vector_3d(scale / 2, scale / 2, 0));
+    const double bound = 0.01 * scale;
+    const GR::Distance_bound check(grid, bound);
+    const std::vector<GR::Triangle_3d> before = star(grid, centre, vec(grid.point(centre)));
+    std::vector<GR::Triangle_3d> around;
+    for(auto f : grid.faces())
+    {
+      const auto v = GR::face_vertices(grid, f);
+      if(std::find(v.begin(), v.end(), centre) == v.end())
+        around.push_back(GR::Triangle_3d{{vec(grid.point(v[0])), vec(grid.point(v[1])), vec(grid.point(v[2]))}});
+    }
+    auto covered = [&](const Vector_3d& moved) { return check.input_covered(before, star(grid, centre, moved), around); };
+    // Lifted by h, the cone's nearest point to the centre below is about h away (the star's
+    // edges are 1/6 and sqrt(2)/6 long, so it is h cos of a small angle).
+    for(double h : {0.5, 0.98})
+      EXPECT_TRUE(covered(vec(grid.point(centre)) + Vector_3d(0, 0, h * bound))) << h << " scale " << scale;
+    for(double h : {1.05, 3.0})
+      EXPECT_FALSE(covered(vec(grid.point(centre)) + Vector_3d(0, 0, h * bound))) << h << " scale " << scale;
+    // Slid within the plane, the star still covers all of it.
+    EXPECT_TRUE(covered(vec(grid.point(centre)) + Vector_3d(0.05 * scale, -0.03 * scale, 0)));
+    // Output triangles that were there are kept by the other direction's check.
+    EXPECT_TRUE(check.near_input(star(grid, centre, vec(grid.point(centre)) + Vector_3d(0, 0, 0.9 * bound))));
+    EXPECT_FALSE(check.near_input(star(grid, centre, vec(grid.point(centre)) + Vector_3d(0, 0, 1.1 * bound))));
   }
 }
 

@@ -97,6 +97,12 @@ std::string usage()
       << "                          quarter of the target length and the target length; without\n"
       << "                          re-sampling, E shortens the edges aimed at where it is curved\n"
       << "                          (default: none, a field for the target length's count)\n"
+      << "  --distance-bound D      keep the output within D (input units) of the input, both ways:\n"
+      << "                          every operation is checked before it is taken, the sizing field\n"
+      << "                          is that of a tolerance of D / 2 unless --sizing-tolerance is given;\n"
+      << "                          the distance achieved is measured and printed (default: none)\n"
+      << "  --distance-bound-ratio R  the same, D = R times the input's bounding-box diagonal\n"
+      << "                          (default: none)\n"
       << "  --no-resampling         the paper's own connectivity passes (flips, splits and collapses\n"
       << "                          in flat regions, vertex splits) instead of re-sampling the surface\n"
       << "                          to a curvature-adapted sizing field (default: "
@@ -205,6 +211,7 @@ int main(int argc, char** argv)
   // What the user gives; the rest is left to the library's defaults.
   std::optional<std::size_t> iterations, greedy_iterations;
   std::optional<double> lambda_data, face_data_weight, target_length, sizing_tolerance;
+  std::optional<double> distance_bound, distance_bound_ratio;
   std::optional<std::size_t> target_vertices, threads;
   std::optional<unsigned int> seed;
   bool quiet = false, connectivity = true;
@@ -255,6 +262,16 @@ int main(int argc, char** argv)
         return EXIT_FAILURE;
       }
     }
+    else if(arg == "--distance-bound" || arg == "--distance-bound-ratio")
+    {
+      std::optional<double>& bound = arg == "--distance-bound" ? distance_bound : distance_bound_ratio;
+      value(bound);
+      if(!(*bound > 0))
+      {
+        std::cerr << "graphcut_remesh: " << arg << " needs a positive number\n";
+        return EXIT_FAILURE;
+      }
+    }
     else if(arg == "--target-vertices" || arg == "--threads")
     {
       std::optional<std::size_t>& count = arg == "--threads" ? threads : target_vertices;
@@ -293,6 +310,11 @@ int main(int argc, char** argv)
     else
       files.push_back(arg);
   }
+  if(distance_bound && distance_bound_ratio)
+  {
+    std::cerr << "graphcut_remesh: give --distance-bound or --distance-bound-ratio, not both\n";
+    return EXIT_FAILURE;
+  }
   if(target_length && target_vertices)
   {
     std::cerr << "graphcut_remesh: give --target-length or --target-vertices, not both\n";
@@ -327,6 +349,8 @@ int main(int argc, char** argv)
     const auto start = std::chrono::steady_clock::now();
     // The named parameters hold a value for every option: the user's, or the library's default.
     const GR::Remeshing_options defaults;
+    if(distance_bound_ratio)
+      distance_bound = *distance_bound_ratio * PMP::internal::Graphcut_remeshing::bounding_box_diagonal(input, get(CGAL::vertex_point, input));
     // A density asked for re-samples, whatever --no-resampling says.
     const bool resamples = resampling || target_length || target_vertices;
     const std::pair<double, double> default_bounds =
@@ -340,6 +364,7 @@ int main(int argc, char** argv)
       GP::lambda_data(lambda_data.value_or(defaults.weights.lambda_data)),
       GP::face_data_weight(face_data_weight.value_or(defaults.weights.face_data_weight)),
       GP::do_connectivity_optimization(connectivity), GP::resampling(resampling),
+      GP::distance_bound(distance_bound.value_or(0)),
       GP::sharp_angle_bounds(std::make_pair(sharp_low.value_or(default_bounds.first),
                                             sharp_high.value_or(default_bounds.second))));
     // The call with a target length, as isotropic_remeshing's, or the one without.
@@ -421,10 +446,16 @@ int main(int argc, char** argv)
     const PMP::Mesh_quality_report before = PMP::mesh_quality_report(input);
     const PMP::Mesh_quality_report after = PMP::mesh_quality_report(mesh);
     const PMP::Relative_surface_distance distance = PMP::relative_surface_distance(input, mesh);
+    std::vector<std::pair<std::string, std::string> > rows{{"mode", mode},
+                                                           {"target edge length", tools::json_number(target_edge_length)}};
+    if(distance_bound)
+    {
+      rows.emplace_back("distance bound", tools::json_number(*distance_bound));
+      rows.emplace_back("distance achieved", tools::json_number(stats.hausdorff_distance));
+    }
     if(!quiet)
     {
-      tools::write_table(std::cout, {"input", "output"}, {before, after}, &distance, nullptr,
-                         {{"mode", mode}, {"target edge length", tools::json_number(target_edge_length)}});
+      tools::write_table(std::cout, {"input", "output"}, {before, after}, &distance, nullptr, rows);
       std::cout << "time (s)                  " << std::setw(32) << seconds << '\n';
     }
     if(!json_file.empty())
@@ -438,6 +469,9 @@ int main(int argc, char** argv)
       tools::write_json(out, distance);
       out << ", \"seconds\": " << tools::json_number(seconds);
       out << ", \"mode\": \"" << mode << "\", \"target_edge_length\": " << tools::json_number(target_edge_length);
+      if(distance_bound)
+        out << ", \"distance_bound\": " << tools::json_number(*distance_bound)
+            << ", \"distance_achieved\": " << tools::json_number(stats.hausdorff_distance);
       if(target_vertices)
         out << ", \"target_vertices\": " << *target_vertices << ", \"runs\": " << runs << ", \"kept_run\": " << kept_run;
       out << ", \"energy\": [";

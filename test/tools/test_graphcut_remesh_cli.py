@@ -95,11 +95,30 @@ with tempfile.TemporaryDirectory() as tmp:
     with open(out2, 'rb') as a, open(out3, 'rb') as b:
         check(a.read() == b.read(), "--threads 1 and 2 gave different outputs")
 
+    # --distance-bound-ratio: the output keeps within R times the diagonal, by the call's measure and by
+    # the tool's, and both say so; so does --distance-bound, in the input's units.
+    joint = os.path.join(data_dir, 'joint.off')
+    r = run([joint, out2, '--distance-bound-ratio', '2e-3', '--json', report] + short)
+    with open(report) as f:
+        j = json.load(f)
+    check(r.returncode == 0 and 'distance bound' in r.stdout and 'distance achieved' in r.stdout,
+          "--distance-bound-ratio: %d %r" % (r.returncode, r.stdout))
+    check(0 < j.get('distance_achieved', 1) <= j.get('distance_bound', 0),
+          "--distance-bound-ratio JSON: %r" % {k: j.get(k) for k in ('distance_bound', 'distance_achieved')})
+    check(j['distance']['hausdorff'] <= 2e-3, "the tool measures %r against a bound of 2e-3" % j['distance'])
+    bound = round(j['distance_bound'], 3)
+    r = run([joint, out3, '--quiet', '--distance-bound', str(bound), '--json', report] + short)
+    with open(report) as f:
+        j = json.load(f)
+    check(r.returncode == 0 and j.get('distance_bound') == bound and 0 < j.get('distance_achieved', 1) <= bound,
+          "--distance-bound %r: %r" % (bound, {k: j.get(k) for k in ('distance_bound', 'distance_achieved')}))
+
     r = run(['--help'])
     check(r.returncode == 0 and r.stderr == '', "--help exit code %d, stderr %r" % (r.returncode, r.stderr))
     for option in ('--seed', '--json', '--iterations', '--greedy-iterations', '--lambda-data',
                    '--face-data-weight', '--no-connectivity', '--no-resampling', '--sharp-angle', '--quiet', '--help',
-                   '--target-length', '--target-vertices', '--sizing-tolerance', '--threads'):
+                   '--target-length', '--target-vertices', '--sizing-tolerance', '--threads', '--distance-bound',
+                   '--distance-bound-ratio'):
         check(option in r.stdout, "--help does not document %s" % option)
     for fmt in ('OFF', 'OBJ', 'PLY', 'STL'):
         check(fmt in r.stdout, "--help does not name the %s format" % fmt)
@@ -139,6 +158,10 @@ with tempfile.TemporaryDirectory() as tmp:
     r = run([mesh, missing_out, '--target-length', '0.5', '--target-vertices', '900'] + short)
     check(r.returncode == 1 and 'not both' in r.stderr and not os.path.exists(missing_out),
           "--target-length with --target-vertices: %d %r" % (r.returncode, r.stderr))
+    for bad in (['--distance-bound', '0'], ['--distance-bound-ratio', '-1'],
+                ['--distance-bound', '0.1', '--distance-bound-ratio', '0.001']):
+        r = run([mesh, missing_out] + bad + short)
+        check(r.returncode == 1 and not os.path.exists(missing_out), "%s: %d %r" % (bad, r.returncode, r.stderr))
     r = run([mesh, missing_out, '--threads', '0'] + short)
     check(r.returncode == 1 and not os.path.exists(missing_out), "--threads 0: %d %r" % (r.returncode, r.stderr))
     # An output format that cannot be written is refused before the work, with one line.

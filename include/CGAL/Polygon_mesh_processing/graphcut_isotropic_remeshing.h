@@ -137,6 +137,7 @@ struct Sizing_request
 {
   double tolerance = 0;
   std::pair<double, double> bounds{0, 0};
+  double distance_bound = 0;
 };
 
 template <typename NamedParameters>
@@ -154,6 +155,9 @@ Sizing_request sizing_request(const NamedParameters& np)
   if(r.bounds != std::make_pair(0., 0.) &&
      (!(r.bounds.first > 0) || !(r.bounds.first <= r.bounds.second) || !std::isfinite(r.bounds.second)))
     throw std::invalid_argument("graphcut_isotropic_remeshing: the edge length bounds must be 0 < shortest <= longest");
+  r.distance_bound = choose_parameter(get_parameter(np, GNP::distance_bound), r.distance_bound);
+  if(!(r.distance_bound >= 0) || !std::isfinite(r.distance_bound))
+    throw std::invalid_argument("graphcut_isotropic_remeshing: the distance bound must be finite, and positive or 0 for none");
   return r;
 }
 
@@ -202,6 +206,16 @@ remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<Trian
     options.sizing_tolerance = copy.to_unit_length(sizing.tolerance);
   }
   options.edge_length_bounds = {copy.to_unit_length(sizing.bounds.first), copy.to_unit_length(sizing.bounds.second)};
+  if(sizing.distance_bound > 0)
+  {
+    // A millionth below the bound: the unit box and the way back to the input's units round.
+    options.distance_bound = (1 - 1e-6) * copy.to_unit_length(sizing.distance_bound);
+    if(!(sizing.tolerance > 0))
+    {
+      options.error_bounded_sizing = true;
+      options.sizing_tolerance = Remeshing_options::bound_to_sizing_tolerance * options.distance_bound;
+    }
+  }
   if(target_edge_length > 0)
     options.target_edge_length = copy.to_unit_length(target_edge_length);
   // Re-sampling bounds how far a shortened feature line leaves the removed vertex and keeps a turn
@@ -217,6 +231,8 @@ remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<Trian
   Graphcut_remesher remesher(work, input_mean_length, std::move(features.first), std::move(features.second), options,
                              copy.output_points());
   Graphcut_remeshing_statistics stats = remesher.run(listeners);
+  if(options.distance_bound > 0)
+    stats.hausdorff_distance = remesher.measured_distance() / copy.to_unit_length(1);
 #ifndef CGAL_NO_POSTCONDITIONS
   {
     // Debug builds: what the method promises, after every run, cancelled or not.
@@ -477,6 +493,17 @@ remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<Trian
  *     \cgalParamDefault{`(0, 0)`, which stands for a quarter of the target length and the target
  *                       length (the input's mean edge length without one)}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{graphcut_parameters::distance_bound}
+ *     \cgalParamDescription{the largest symmetric Hausdorff distance, in the units of `tmesh`'s
+ *                           points, between the output and the input: every operation that moves
+ *                           the surface is checked against the input's triangles, both ways,
+ *                           before it is taken, and refused if it would break the bound; the
+ *                           sizing field is that of a `sizing_tolerance` of half the bound unless
+ *                           one is given; the distance achieved is measured at the end
+ *                           (`Graphcut_remeshing_statistics::hausdorff_distance`)}
+ *     \cgalParamType{`double`, positive, or 0 for none}
+ *     \cgalParamDefault{0: no bound}
+ *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
  * \cgal's `protect_constraints`, `collapse_constraints` and `do_project` are refused at compile
@@ -485,9 +512,9 @@ remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<Trian
  *
  * \return the energies before and after each iteration, and counts
  *
- * \throws std::invalid_argument when `sizing_tolerance` is not positive and finite, or
- *         `edge_length_bounds` neither (0, 0) nor 0 < shortest <= longest; `tmesh` is then left
- *         untouched
+ * \throws std::invalid_argument when `sizing_tolerance` is not positive and finite,
+ *         `edge_length_bounds` neither (0, 0) nor 0 < shortest <= longest, or `distance_bound`
+ *         negative or not finite; `tmesh` is then left untouched
  * \throws Graphcut_remeshing_input_error when `validate_graphcut_remeshing_input(tmesh, np)`
  *         finds a defect (no faces, a non-triangle face, a non-finite coordinate, an isolated or
  *         non-manifold vertex, a degenerate triangle, an invalid halfedge structure); `tmesh` is

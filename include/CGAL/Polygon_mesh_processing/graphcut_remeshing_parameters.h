@@ -31,6 +31,7 @@ enum do_connectivity_optimization_t { do_connectivity_optimization };
 enum resampling_t { resampling };
 enum sizing_tolerance_t { sizing_tolerance };
 enum edge_length_bounds_t { edge_length_bounds };
+enum distance_bound_t { distance_bound };
 } // namespace graphcut_internal_np
 /// \endcond
 
@@ -84,6 +85,10 @@ struct Graphcut_remeshing_statistics
   std::size_t number_of_vertex_splits = 0;
   /// the connectivity passes undone because they would have made the mesh self-intersect
   std::size_t number_of_undone_passes = 0;
+  /// with `graphcut_parameters::distance_bound`, the symmetric Hausdorff distance between the
+  /// output and the input measured at the end (in the mesh's units; the vertices and 100,000
+  /// random points of each surface, to the other); negative without a bound
+  double hausdorff_distance = -1;
   /// `true` if the visitor stopped the run
   bool cancelled = false;
 };
@@ -250,6 +255,21 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(sizing_tolerance)
  * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
  */
 CGAL_GRAPHCUT_REMESHING_PARAMETER(edge_length_bounds)
+/*!
+ * sets `distance_bound`, beyond the paper: the largest symmetric Hausdorff distance (in the mesh's
+ * units) between the output and the input. Every operation that moves the surface (the
+ * relocation's candidates, splits, collapses, flips, vertex splits, relaxation, coverings, the
+ * smallest-angle repair) is checked against the input's triangles, both ways, before it is taken,
+ * and refused if it would break the bound. The check is exact up to rounding: a triangle is cut
+ * into convex cells, each measured at its corners to one triangle of the other surface (the
+ * distance to a triangle is convex). Unless `sizing_tolerance` is given, the sizing field is that
+ * of a tolerance of half the bound.
+ *
+ * \tparam T a number type convertible to `double`
+ * \param value the bound, positive; 0 sets none
+ * \return a pack of named parameters holding `value`, to be chained with others by `combine()`
+ */
+CGAL_GRAPHCUT_REMESHING_PARAMETER(distance_bound)
 
 #undef CGAL_GRAPHCUT_REMESHING_PARAMETER
 

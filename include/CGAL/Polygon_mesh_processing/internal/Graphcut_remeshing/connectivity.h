@@ -51,14 +51,15 @@ public:
   // `polylines`, the reference's feature polylines, lets long sharp edges be split (none are
   // without it); `local_energy(v, x)`, the terms of eq. (1) that depend on the position x of v
   // (eq. 7), lets the relaxation keep only the moves that do not raise it; no operation touches
-  // the vertices v with frozen[v] (Local_operations).
+  // the vertices v with frozen[v], and with `bound` every operation keeps it (Local_operations).
   Connectivity_optimizer(Work_mesh& mesh, const Reference_surface<Work_mesh>& reference,
                          Tracking_state& state, const Sizing_field& sizing,
                          const Feature_polylines<Work_mesh>* polylines = nullptr,
                          Local_energy local_energy = Local_energy(),
                          Connectivity_operations operations = Connectivity_operations(),
-                         const std::vector<char>& frozen = Local_operations::nothing_frozen())
-    : m_local(mesh, reference, state, sizing, polylines, frozen), m_local_energy(std::move(local_energy)),
+                         const std::vector<char>& frozen = Local_operations::nothing_frozen(),
+                         const Distance_bound* bound = nullptr)
+    : m_local(mesh, reference, state, sizing, polylines, frozen, bound), m_local_energy(std::move(local_energy)),
       m_operations(operations), m_resamples(sizing.resamples()), m_covers_reference(sizing.covers_reference)
   {}
 

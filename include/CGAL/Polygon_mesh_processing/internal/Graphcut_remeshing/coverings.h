@@ -212,7 +212,7 @@ public:
           continue;
         smallest = (std::min)({smallest, smallest_angle(pb, x, pd), smallest_angle(x, pa, pd)});
       }
-      if(smallest > best)
+      if(smallest > best && split_keeps_distance_bound(h, x))
       {
         best = smallest;
         best_h = h;
@@ -227,7 +227,8 @@ public:
          fan_unfolded(std::array<Halfedge, 3>{{h0, m_mesh.next(h0), m_mesh.prev(h0)}}, x))
       {
         const double smallest = (std::min)({smallest_angle(p0, p1, x), smallest_angle(p1, p2, x), smallest_angle(p2, p0, x)});
-        if(smallest > best)
+        if(smallest > best && keeps_distance_bound(std::array<Face, 1>{{f}}, {Triangle_3d{{p0, p1, x}}, Triangle_3d{{p1, p2, x}},
+                                                                               Triangle_3d{{p2, p0, x}}}))
         {
           const Vertex from = t[0];
           const Halfedge hv = CGAL::Euler::add_center_vertex(h0, m_mesh);

@@ -103,7 +103,7 @@ public:
           }
           new_min = (std::min)(new_min, smallest_angle(x, position(q), position(p)));
         }
-      if(ok && new_min - old_min > plan.gain)
+      if(ok && new_min - old_min > plan.gain && collapse_keeps_distance_bound(a, b, x))
       {
         plan.gain = new_min - old_min;
         plan.collapse = Collapse{a, b, x};
@@ -339,7 +339,9 @@ private:
       gone_covered = gone_covered || (gone - closest_point_on_triangle(gone, c.point, t.q, t.p, barycentric)).norm() <= t.allowed;
       was_covered = was_covered || (was - closest_point_on_triangle(was, c.point, t.q, t.p, barycentric)).norm() <= t.allowed;
     }
-    return gone_covered && was_covered ? smallest : -1;
+    if(!gone_covered || !was_covered || !collapse_keeps_distance_bound(c.removed, c.kept, c.point))
+      return -1;
+    return smallest;
   }
 };
 

@@ -99,7 +99,10 @@ public:
       return false;
     const double before = distance_to_reference((pa + pb) / 2, a);
     const double after = distance_to_reference((pc + pd) / 2, c);
-    return !(after > (std::max)(before, m_sizing.tolerance));
+    if(after > (std::max)(before, m_sizing.tolerance))
+      return false;
+    return keeps_distance_bound(std::array<Face, 2>{{m_mesh.face(h), m_mesh.face(o)}},
+                                {Triangle_3d{{pa, pd, pc}}, Triangle_3d{{pd, pb, pc}}});
   }
 
   // Whether e may be flipped: off the features and the border, its vertices not frozen, its

@@ -131,6 +131,8 @@ public:
     if(!acceptable(pa, p, pc, a, abc) || !acceptable(p, pb, pc, b, abc) ||
        (two_faces && (!acceptable(pb, p, pd, b, bad) || !acceptable(p, pa, pd, a, bad))))
       return Plan();
+    if(!split_keeps_distance_bound(h, p))
+      return Plan();
     if(m_sizing.resamples())
       return plan;
     const double old_q = (std::min)(split_quality(pa, pb, pc), split_quality(pb, pa, pd));

@@ -3,12 +3,13 @@
 //
 // What the connectivity operations of section 3 share: the working mesh with its tracking state,
 // the reference, the sizing field and the feature polylines; the acceptability of a new triangle
-// and the fold check of a new fan, the projection onto the reference, and the binding of a new
-// vertex to the reference.
+// and the fold check of a new fan, the distance bound's check of an operation, the projection onto
+// the reference, and the binding of a new vertex to the reference.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_LOCAL_OPERATIONS_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_GRAPHCUT_REMESHING_LOCAL_OPERATIONS_H
 
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/distance_bound.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/guarantees.h>
@@ -65,12 +66,13 @@ public:
   // `polylines`, the reference's feature polylines, lets long sharp edges be split and feature
   // lines be re-sampled (none are without it). No operation touches a vertex v with frozen[v]
   // (by vertex index; a vertex beyond its end is not frozen): frozen vertices are never removed,
-  // so that the index of a removed vertex that a new one takes was not frozen either.
+  // so that the index of a removed vertex that a new one takes was not frozen either. With
+  // `bound`, every operation keeps the distance bound (distance_bound.h).
   Local_operations(Work_mesh& mesh, const Reference_surface<Work_mesh>& reference, Tracking_state& state,
                    const Sizing_field& sizing, const Feature_polylines<Work_mesh>* polylines = nullptr,
-                   const std::vector<char>& frozen = nothing_frozen())
+                   const std::vector<char>& frozen = nothing_frozen(), const Distance_bound* bound = nullptr)
     : m_mesh(mesh), m_reference(reference), m_state(state), m_sizing(sizing), m_polylines(polylines),
-      m_frozen(frozen)
+      m_frozen(frozen), m_bound(bound)
   {
     m_state.fit(m_mesh);
   }
@@ -243,6 +245,26 @@ public:
     return true;
   }
 
+  // The distance bound, when one is set (distance_bound.h): whether an operation keeps it. These
+  // tests come last in each operation: they are the dearest.
+  template <typename Faces>
+  bool keeps_distance_bound(const Faces& removed, const std::vector<Triangle_3d>& created) const
+  {
+    return !m_bound || m_bound->allows_replacing(m_mesh, removed, created);
+  }
+  bool move_keeps_distance_bound(Vertex v, const Vector_3d& x) const
+  {
+    return !m_bound || m_bound->allows_move(m_mesh, v, x);
+  }
+  bool split_keeps_distance_bound(Halfedge h, const Vector_3d& p) const
+  {
+    return !m_bound || m_bound->allows_split(m_mesh, h, p);
+  }
+  bool collapse_keeps_distance_bound(Vertex removed, Vertex kept, const Vector_3d& x) const
+  {
+    return !m_bound || m_bound->allows_collapse(m_mesh, removed, kept, x);
+  }
+
   // The triangles around the new or moved vertex v are tracked from v's reference triangle.
   void track_faces_from(Vertex v)
   {
@@ -270,6 +292,7 @@ protected:
   const Sizing_field& m_sizing;
   const Feature_polylines<Work_mesh>* m_polylines;
   const std::vector<char>& m_frozen;
+  const Distance_bound* m_bound;
 };
 
 } // namespace Graphcut_remeshing

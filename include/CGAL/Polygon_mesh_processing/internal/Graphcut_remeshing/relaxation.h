@@ -67,7 +67,7 @@ public:
           if(!is_acceptable_triangle(y, link[k].first, link[k].second, normals[k], min_turn_cosine) ||
              !is_acceptable_triangle(y, link[k].first, link[k].second, m_reference.normal(hint)))
             return false;
-        if(!keeps_fit(within_tolerance_rule, v, x, y, link, energy_here))
+        if(!keeps_fit(within_tolerance_rule, v, x, y, link, energy_here) || !move_keeps_distance_bound(v, y))
           return false;
         m_mesh.point(v) = Work_kernel::Point_3(y.x(), y.y(), y.z());
         return true;

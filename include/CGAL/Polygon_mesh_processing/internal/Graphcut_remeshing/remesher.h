@@ -27,6 +27,7 @@
 #include <CGAL/Polygon_mesh_processing/graphcut_remeshing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/candidates.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/connectivity.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/distance_bound.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/energy.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/features.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/guarantees.h>
@@ -36,6 +37,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/relocation_cut.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/remeshing_options.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/sizing.h>
+#include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/surface_distance.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/tracking.h>
 #include <CGAL/Polygon_mesh_processing/internal/Graphcut_remeshing/work_mesh.h>
 
@@ -74,7 +76,8 @@ public:
   Graphcut_remesher(Work_mesh& mesh, double input_mean_length, std::vector<char> feature_edge,
                     std::vector<Vertex_kind> kind, const Remeshing_options& options,
                     Output_points output = Output_points())
-    : m_mesh(mesh), m_reference_mesh(mesh), m_reference(m_reference_mesh, options.sharp_angle_bounds.first),
+    : m_mesh(mesh), m_reference_mesh(mesh), m_bound(m_reference_mesh, options.distance_bound),
+      m_reference(m_reference_mesh, options.sharp_angle_bounds.first),
       m_reference_feature_edge(std::move(feature_edge)), m_reference_kind(std::move(kind)),
       m_polylines(m_reference_mesh, m_reference_feature_edge, m_reference_kind), m_options(options),
       m_input_mean_length(input_mean_length),
@@ -107,6 +110,19 @@ public:
   double energy() const { return m_energy.energy(); }
 
   const Reference_surface<Work_mesh>& reference() const { return m_reference; }
+
+  // The symmetric Hausdorff distance between the working mesh and the reference (unit box),
+  // Metro-style (surface_distance.h): the vertices and `face_samples` random points of each
+  // surface, to the other.
+  double measured_distance(std::size_t face_samples = 100000) const
+  {
+    CGAL::Random rng(m_options.random_seed);
+    const auto one_way = [&](const Work_mesh& from, const Work_mesh& to) {
+      return distance_to_mesh(sample_surface(from, get(CGAL::vertex_point, from), face_samples, rng), to,
+                              get(CGAL::vertex_point, to), Work_kernel()).max;
+    };
+    return (std::max)(one_way(m_mesh, m_reference_mesh), one_way(m_reference_mesh, m_mesh));
+  }
 
   // Runs both phases; `visitor(progress)` is called after each iteration and stops the run when it
   // returns false.
@@ -220,7 +236,8 @@ public:
         touched[std::size_t(c.moving[i])] = labels[i];
       const bool intersecting = exclude_new_intersections(c, labels, touched, excluded);
       const bool folding = exclude_new_folds(c, labels, previous, excluded);
-      const bool decided = !intersecting && !folding;
+      const bool breaking = exclude_distance_breaks(c, labels, previous, excluded);
+      const bool decided = !intersecting && !folding && !breaking;
       if(decided && take_candidates(c, labels, touched))
         return moved;
       for(std::size_t i = 0; i < c.moving.size(); ++i)
@@ -316,7 +333,7 @@ private:
                                        [this](Vertex v, const Vector_3d& x, double bound) {
                                          return m_energy.local_evidence(v, x, bound);
                                        },
-                                       m_options.operations, frozen);
+                                       m_options.operations, frozen, &m_bound);
       const Connectivity_counts counts = pass(optimizer);
       m_energy.collect_feature_edges();
       // The mesh had no new intersections before the pass: only triangles it changed or moved
@@ -402,6 +419,8 @@ private:
       const std::size_t i = std::size_t(v);
       CGAL::Random rng(item_seed(m_options.random_seed, m_round, i));
       proposed[i] = m_candidates.propose(v, temperature, greedy, rng, c.point[i], c.location[i], c.face[i], face_term);
+      // A candidate that would break the distance bound costs infinitely much: it is not offered.
+      proposed[i] = proposed[i] && m_bound.allows_move(m_mesh, v, c.point[i]);
       if(proposed[i])
         c.data_by_vertex[i] = m_energy.data_energy(v, c.point[i], c.face[i]);
     });
@@ -482,6 +501,41 @@ private:
     return found;
   }
 
+  // With the labelled candidates taken (`previous` the positions before): false when the faces
+  // around every vertex that moved keep the distance bound, else the candidates of the moved
+  // vertices of those faces excluded and true. Each candidate kept it alone (propose_candidates()):
+  // only a vertex that moved next to another that moved needs a look.
+  bool exclude_distance_breaks(const Candidate_set& c, const std::vector<char>& labels,
+                               const std::vector<Vector_3d>& previous, std::vector<char>& excluded)
+  {
+    if(!m_bound.active())
+      return false;
+    const auto moved = [&](Vertex u) {
+      const std::size_t i = c.variable[std::size_t(u)];
+      return i != Relocation_cut::none && labels[i];
+    };
+    const auto before = [&](Vertex u) { return moved(u) ? previous[c.variable[std::size_t(u)]] : position(u); };
+    std::vector<Vertex> breaking;
+    collect_by_blocks(c.moving.size(), breaking, [&](std::size_t i, std::vector<Vertex>& found) {
+      const Vertex v = c.moving[i];
+      if(!labels[i])
+        return;
+      bool next_to_a_move = false;
+      for(Vertex w : vertices_around_target(m_mesh.halfedge(v), m_mesh))
+        next_to_a_move = next_to_a_move || moved(w);
+      if(next_to_a_move && !m_bound.allows_moved_star(m_mesh, v, before))
+        found.push_back(v);
+    });
+    for(Vertex v : breaking)
+    {
+      excluded[c.variable[std::size_t(v)]] = 1;
+      for(Vertex w : vertices_around_target(m_mesh.halfedge(v), m_mesh))
+        if(moved(w))
+          excluded[c.variable[std::size_t(w)]] = 1;
+    }
+    return !breaking.empty();
+  }
+
   // The pairs of triangles folded onto each other (guarantees.h) across an edge off the features,
   // with a vertex that `changed` flags.
   std::vector<std::pair<Face, Face> > folds_among(const std::vector<char>& changed) const
@@ -560,6 +614,7 @@ private:
 
   Work_mesh& m_mesh;
   const Work_mesh m_reference_mesh;
+  Distance_bound m_bound; // of the working mesh to m_reference_mesh
   Reference_surface<Work_mesh> m_reference;
   const std::vector<char> m_reference_feature_edge;   // by reference edge
   const std::vector<Vertex_kind> m_reference_kind;    // by reference vertex

@@ -182,7 +182,7 @@ private:
                   m_polylines->chord_deviation(l, feature_location(end), 2 * chord) <= m_sizing.tolerance_for(chord, target);
       }
       const double smallest = on_line ? smallest_angle_after_move(link, x, y, v, poor) : -1;
-      if(smallest > best && fan_unfolded(link, y, {v}))
+      if(smallest > best && fan_unfolded(link, y, {v}) && move_keeps_distance_bound(v, y))
       {
         best = smallest;
         best_location = l;
@@ -265,7 +265,7 @@ private:
       Face hint = m_state.vertex_hint[std::size_t(v)];
       const Vector_3d y = m_reference.closest_point(x + tangential(target - x, normal), hint);
       const double smallest = smallest_angle_after_move(link, x, y, v, poor, m_reference.normal(hint));
-      if(smallest > best && fan_unfolded(link, y, {v}))
+      if(smallest > best && fan_unfolded(link, y, {v}) && move_keeps_distance_bound(v, y))
       {
         best = smallest;
         best_y = y;

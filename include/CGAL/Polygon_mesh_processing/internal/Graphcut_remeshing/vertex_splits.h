@@ -140,12 +140,30 @@ public:
       double old_min = pi;
       for(std::size_t k = 0; k < n; ++k)
         old_min = (std::min)(old_min, smallest_angle(x, position(ring[k]), position(ring[(k + 1) % n])));
-      found = best_angle >= (std::min)(old_min, 30 * pi / 180);
+      found = best_angle >= (std::min)(old_min, 30 * pi / 180) && keeps_distance_bound_after(v, ring, best);
     }
     return found ? std::optional<Vertex_split>(best) : std::nullopt;
   }
 
 private:
+  // Whether splitting v as s keeps the distance bound (Local_operations::keeps_distance_bound()).
+  bool keeps_distance_bound_after(Vertex v, const std::vector<Vertex>& ring, const Vertex_split& s) const
+  {
+    const std::size_t n = ring.size(), span = (s.j + n - s.i) % n;
+    boost::container::small_vector<Face, 16> fan;
+    for(Halfedge g : halfedges_around_target(m_mesh.halfedge(v), m_mesh))
+      if(!m_mesh.is_border(g))
+        fan.push_back(m_mesh.face(g));
+    std::vector<Triangle_3d> created;
+    for(std::size_t k = 0; k < span; ++k)
+      created.push_back(Triangle_3d{{s.first, position(ring[(s.i + k) % n]), position(ring[(s.i + k + 1) % n])}});
+    for(std::size_t k = 0; k < n - span; ++k)
+      created.push_back(Triangle_3d{{s.second, position(ring[(s.j + k) % n]), position(ring[(s.j + k + 1) % n])}});
+    created.push_back(Triangle_3d{{s.first, position(ring[s.j]), s.second}});
+    created.push_back(Triangle_3d{{s.second, position(ring[s.i]), s.first}});
+    return keeps_distance_bound(fan, created);
+  }
+
   // The smallest angle of the triangles that split v into p, fanned to ring[i] .. ring[i + span],
   // and q, fanned to the rest of the ring, or -1 when one of them is not acceptable (`fan` is the
   // area vector of v's fan).
