@@ -687,10 +687,13 @@ TEST(GraphcutRemeshing, DistanceBoundIsKept)
     Mesh mesh;
     double least_mean_min_angle;
   };
-  std::vector<Case> cases{{"noisy sphere", noisy_sphere(3, 0.03, 0.01, 7), 50}};
+  // The sphere's noise is up to three times the bound: the bound keeps it. joint's input (9.35
+  // degrees) is made of slivers across its rounds, which isotropic_remeshing() mends by leaving it
+  // by 76 times the bound, and the bound by shorter edges.
+  std::vector<Case> cases{{"noisy sphere", noisy_sphere(3, 0.03, 0.01, 7), 49}};
   std::vector<double> scales{1.0};
 #ifndef GRAPHCUT_REMESHING_SANITIZE
-  cases.push_back({"joint", load_sample_mesh("joint"), 10}); // its input: 9.35 degrees
+  cases.push_back({"joint", load_sample_mesh("joint"), 30});
   scales = {1e-2, 1.0, 1e2};
 #endif
   for(const Case& c : cases)
@@ -716,7 +719,6 @@ TEST(GraphcutRemeshing, DistanceBoundIsKept)
       EXPECT_LE(sampled_distance(m), bound) << c.name << ", scale " << scale;
       EXPECT_GT(stats.hausdorff_distance, 0.3 * bound) << c.name << ", scale " << scale;
       EXPECT_LE(stats.hausdorff_distance, bound) << c.name << ", scale " << scale;
-      // The part's input is made of slivers across its rounds: at this bound they stay (the manual).
       EXPECT_GE(PMP::mesh_quality_report(m).mean_min_angle, c.least_mean_min_angle) << c.name << ", scale " << scale;
     }
   Mesh refused = noisy_sphere(2, 0.03, 0.01, 7);

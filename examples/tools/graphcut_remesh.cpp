@@ -99,7 +99,7 @@ std::string usage()
       << "                          (default: none, a field for the target length's count)\n"
       << "  --distance-bound D      keep the output within D (input units) of the input, both ways:\n"
       << "                          every operation is checked before it is taken, the sizing field\n"
-      << "                          is that of a tolerance of D / 2 unless --sizing-tolerance is given;\n"
+      << "                          is that of a tolerance of D unless --sizing-tolerance is given;\n"
       << "                          the distance achieved is measured and printed (default: none)\n"
       << "  --distance-bound-ratio R  the same, D = R times the input's bounding-box diagonal\n"
       << "                          (default: none)\n"

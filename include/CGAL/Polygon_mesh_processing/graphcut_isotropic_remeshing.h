@@ -210,10 +210,12 @@ remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<Trian
   {
     // A millionth below the bound: the unit box and the way back to the input's units round.
     options.distance_bound = (1 - 1e-6) * copy.to_unit_length(sizing.distance_bound);
+    // The chords the sizing field asks for reach the bound where the surface is curved: a smaller
+    // tolerance costs many vertices for little angle (manual, "A Distance Bound").
     if(!(sizing.tolerance > 0))
     {
       options.error_bounded_sizing = true;
-      options.sizing_tolerance = Remeshing_options::bound_to_sizing_tolerance * options.distance_bound;
+      options.sizing_tolerance = options.distance_bound;
     }
   }
   if(target_edge_length > 0)
@@ -498,7 +500,7 @@ remesh_faces(TriangleMesh& tmesh, std::vector<typename boost::graph_traits<Trian
  *                           points, between the output and the input: every operation that moves
  *                           the surface is checked against the input's triangles, both ways,
  *                           before it is taken, and refused if it would break the bound; the
- *                           sizing field is that of a `sizing_tolerance` of half the bound unless
+ *                           sizing field is that of a `sizing_tolerance` equal to the bound unless
  *                           one is given; the distance achieved is measured at the end
  *                           (`Graphcut_remeshing_statistics::hausdorff_distance`)}
  *     \cgalParamType{`double`, positive, or 0 for none}

@@ -263,7 +263,7 @@ CGAL_GRAPHCUT_REMESHING_PARAMETER(edge_length_bounds)
  * and refused if it would break the bound. The check is exact up to rounding: a triangle is cut
  * into convex cells, each measured at its corners to one triangle of the other surface (the
  * distance to a triangle is convex). Unless `sizing_tolerance` is given, the sizing field is that
- * of a tolerance of half the bound.
+ * of a tolerance equal to the bound.
  *
  * \tparam T a number type convertible to `double`
  * \param value the bound, positive; 0 sets none

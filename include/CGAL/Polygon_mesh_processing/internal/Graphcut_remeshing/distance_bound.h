@@ -194,22 +194,51 @@ inline std::vector<Triangle_3d> triangles_in(const std::vector<Triangle_3d>& tri
   return in;
 }
 
+inline CGAL::Bbox_3 triangles_box(const std::vector<Triangle_3d>& triangles, double grown_by)
+{
+  CGAL::Bbox_3 box;
+  for(const Triangle_3d& t : triangles)
+    for(const Vector_3d& p : t)
+      box += CGAL::Bbox_3(p.x(), p.y(), p.z(), p.x(), p.y(), p.z());
+  return CGAL::Bbox_3(box.xmin() - grown_by, box.ymin() - grown_by, box.zmin() - grown_by, box.xmax() + grown_by,
+                      box.ymax() + grown_by, box.zmax() + grown_by);
+}
+
+// The part of the convex polygon inside the box (empty when it has no area there).
+inline Convex_polygon clipped_to_box(const Convex_polygon& polygon, const CGAL::Bbox_3& box)
+{
+  Convex_polygon in = polygon, inside, outside;
+  for(int k = 0; k < 3 && !in.empty(); ++k)
+  {
+    const Vector_3d axis = Vector_3d::Unit(k);
+    split_polygon(in, axis, box.min(k), inside, outside);
+    split_polygon(inside, -axis, -box.max(k), in, outside);
+  }
+  return in;
+}
+
 // Whether every point of the convex polygon `piece` is within `bound` of the triangles of `cover`
 // (with `relevant`, only the points within `bound` of those triangles need be: the others are
 // within it of triangles that stay). `up` is the direction along which cells are cut. Only the
 // triangles within `bound` of the piece's box count.
-inline bool within_bound(const Convex_polygon& piece, const std::vector<Triangle_3d>& all_cover, const Vector_3d& up,
-                         double bound, const std::vector<Triangle_3d>* all_relevant, int depth = 0, bool first_try = true)
+inline bool within_bound(const Convex_polygon& whole_piece, const std::vector<Triangle_3d>& all_cover,
+                         const Vector_3d& up, double bound, const std::vector<Triangle_3d>* all_relevant,
+                         int depth = 0, bool first_try = true)
 {
   constexpr int max_depth = 6;
-  const CGAL::Bbox_3 box = polygon_box(piece, bound);
   std::vector<Triangle_3d> relevant_here;
+  Convex_polygon piece = whole_piece;
   if(all_relevant)
   {
-    relevant_here = triangles_in(*all_relevant, box);
+    // Only the part of the piece within the bound of a relevant triangle matters.
+    relevant_here = triangles_in(*all_relevant, polygon_box(whole_piece, bound));
     if(relevant_here.empty())
       return true;
+    piece = clipped_to_box(whole_piece, triangles_box(relevant_here, bound));
+    if(piece.empty())
+      return true;
   }
+  const CGAL::Bbox_3 box = polygon_box(piece, bound);
   const std::vector<Triangle_3d>* relevant = all_relevant ? &relevant_here : nullptr;
   const std::vector<Triangle_3d> cover = triangles_in(all_cover, box);
   Vector_3d centre;
@@ -262,7 +291,8 @@ inline bool within_bound(const Convex_polygon& piece, const std::vector<Triangle
   for(Bounded_cell& cell : cells_below(piece, cover, up))
   {
     const double cell_radius = polygon_radius(cell.polygon, centre);
-    if(relevant && distance_to_triangles(centre, *relevant) - cell_radius > bound)
+    const double from_relevant = relevant ? distance_to_triangles(centre, *relevant) : 0;
+    if(from_relevant - cell_radius > bound)
       continue;
     const double at_centre = distance_to_triangles(centre, cover, cell.triangle >= cover.size() ? &cell.triangle : nullptr);
     if(at_centre + cell_radius <= bound)
@@ -272,7 +302,8 @@ inline bool within_bound(const Convex_polygon& piece, const std::vector<Triangle
       corners_within = corners_within && distance_to_triangle(x, cover[cell.triangle]) <= bound;
     if(corners_within)
       continue;
-    if(at_centre > bound || depth == max_depth)
+    // A centre beyond the bound that matters refutes the piece; one that does not, settles nothing.
+    if((at_centre > bound && from_relevant <= bound) || depth == max_depth)
       return false;
     // Halve the cell: a fan of triangles, each cut into four at its midpoints.
     for(std::size_t k = 1; k + 1 < cell.polygon.size(); ++k)
@@ -295,16 +326,6 @@ inline Vector_3d triangle_normal(const Triangle_3d& t)
   const Vector_3d n = (t[1] - t[0]).cross(t[2] - t[0]);
   const double length = n.norm();
   return length > 0 ? Vector_3d(n / length) : Vector_3d(0, 0, 1);
-}
-
-inline CGAL::Bbox_3 triangles_box(const std::vector<Triangle_3d>& triangles, double grown_by)
-{
-  CGAL::Bbox_3 box;
-  for(const Triangle_3d& t : triangles)
-    for(const Vector_3d& p : t)
-      box += CGAL::Bbox_3(p.x(), p.y(), p.z(), p.x(), p.y(), p.z());
-  return CGAL::Bbox_3(box.xmin() - grown_by, box.ymin() - grown_by, box.zmin() - grown_by, box.xmax() + grown_by,
-                      box.ymax() + grown_by, box.zmax() + grown_by);
 }
 
 // The symmetric distance bound between the working mesh and the input (`input`, in the working

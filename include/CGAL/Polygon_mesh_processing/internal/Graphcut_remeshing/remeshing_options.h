@@ -69,9 +69,6 @@ struct Remeshing_options
   // The symmetric distance every operation keeps between the mesh and the input (unit box;
   // graphcut_parameters::distance_bound), or 0 for none (distance_bound.h).
   double distance_bound = 0;
-  // With a distance bound and no sizing tolerance, the tolerance of the sizing field, relative to
-  // the bound: the chords it asks for leave room for the relocation.
-  static constexpr double bound_to_sizing_tolerance = 0.5;
   // CGAL's switches of isotropic_remeshing(): which operations the connectivity passes make and
   // how many relaxation sweeps end a pass, and whether the vertices of the user's constrained
   // edges slide along them (else they stay).
