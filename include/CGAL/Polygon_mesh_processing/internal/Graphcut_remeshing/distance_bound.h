@@ -142,16 +142,31 @@ inline std::vector<Bounded_cell> cells_below(const Convex_polygon& piece, const 
     const Vector_3d normal = (t[1] - t[0]).cross(t[2] - t[0]);
     if(!(std::abs(normal.dot(up)) > edge_on_sine * normal.norm()))
       continue;
+    // The prism's sides, facing in.
+    std::array<Vector_3d, 3> side;
+    std::array<double, 3> offset;
+    for(int j = 0; j < 3; ++j)
+    {
+      side[j] = (t[(j + 1) % 3] - t[j]).cross(up);
+      if(side[j].dot(t[(j + 2) % 3] - t[j]) < 0)
+        side[j] = -side[j];
+      offset[j] = side[j].dot(t[j]);
+    }
     next.clear();
     for(Convex_polygon in : uncovered)
     {
+      // Most polygons lie wholly outside one side: left as they are.
+      bool apart = false;
+      for(int j = 0; j < 3 && !apart; ++j)
+        apart = std::all_of(in.begin(), in.end(), [&](const Vector_3d& x) { return side[j].dot(x) < offset[j]; });
+      if(apart)
+      {
+        next.push_back(in);
+        continue;
+      }
       for(int j = 0; j < 3 && !in.empty(); ++j)
       {
-        const Vector_3d& a = t[j];
-        Vector_3d side = (t[(j + 1) % 3] - a).cross(up);
-        if(side.dot(t[(j + 2) % 3] - a) < 0)
-          side = -side;
-        split_polygon(in, side, side.dot(a), inside, outside);
+        split_polygon(in, side[j], offset[j], inside, outside);
         Vector_3d centre;
         if(!outside.empty() && polygon_radius(outside, centre) > sliver_width)
           next.push_back(outside);
@@ -251,15 +266,19 @@ inline bool within_bound(const Convex_polygon& whole_piece, const std::vector<Tr
   std::size_t nearest = 0;
   if(distance_to_triangles(centre, cover, &nearest) + radius <= bound)
     return true;
-  if(std::all_of(piece.begin(), piece.end(), [&](const Vector_3d& x) { return distance_to_triangle(x, cover[nearest]) <= bound; }))
+  Convex_polygon far;
+  for(const Vector_3d& x : piece)
+    if(distance_to_triangle(x, cover[nearest]) > bound)
+      far.push_back(x);
+  if(far.empty())
     return true;
-  // Most others lie within it of the triangles nearest their corners: cells below those first,
-  // the cells those leave to all triangles.
+  // Most others lie within it of that triangle and of those nearest the corners beyond it: cells
+  // below those first, the cells those leave to all triangles.
   if(first_try)
   {
     std::vector<Triangle_3d> nearest_to_corners(1, cover[nearest]);
     std::vector<std::size_t> taken(1, nearest);
-    for(const Vector_3d& x : piece)
+    for(const Vector_3d& x : far)
     {
       std::size_t k = 0;
       distance_to_triangles(x, cover, &k);
@@ -420,15 +439,17 @@ public:
     return allows(gone, created, triangles_around(m, removed));
   }
 
-  // Whether the faces around v keep the bound now that their vertices moved from where `before(u)`
-  // says they were to where `m` has them (the faces around those staying as they are now).
+  // Whether the faces around v keep the bound now that their vertices, and those of the faces
+  // around them, moved from where `before(u)` says they were to where `m` has them. A face with a
+  // single moved vertex was checked alone when that vertex's move was (allows_move()), and its
+  // triangle is the same: only the faces with two or more moved vertices are checked again.
   template <typename Before>
   bool allows_moved_star(const Work_mesh& m, Vertex v, const Before& before) const
   {
     if(!active())
       return true;
     boost::container::small_vector<Face, 16> star;
-    std::vector<Triangle_3d> gone, created;
+    std::vector<Triangle_3d> gone, created, jointly_moved;
     for(Halfedge g : halfedges_around_target(m.halfedge(v), m))
       if(!m.is_border(g))
       {
@@ -436,8 +457,13 @@ public:
         created.push_back(triangle(m, m.face(g)));
         const auto u = face_vertices(m, m.face(g));
         gone.push_back(Triangle_3d{{before(u[0]), before(u[1]), before(u[2])}});
+        int moved = 0;
+        for(int k = 0; k < 3; ++k)
+          moved += gone.back()[k] != created.back()[k] ? 1 : 0;
+        if(moved > 1)
+          jointly_moved.push_back(created.back());
       }
-    return allows(gone, created, triangles_around(m, star));
+    return near_input(jointly_moved) && input_covered(gone, created, triangles_around(m, star));
   }
 
   // The same for v moved to x.

@@ -216,7 +216,7 @@ public:
     // decides again over fewer candidates. The cut never does worse than keeping everything but
     // for the rounding of its single-precision capacities: a choice that would raise the energy
     // of eq. (1) is undone whole, so that the energy never rises.
-    std::vector<char> excluded(c.moving.size(), 0);
+    std::vector<char> excluded(c.moving.size(), 0), checked(c.moving.size(), 0), checked_labels(c.moving.size(), 0);
     for(;;)
     {
       const std::vector<char> labels = m_cut.decide(c.moving, c.point, c.data, c.variable, excluded);
@@ -236,7 +236,8 @@ public:
         touched[std::size_t(c.moving[i])] = labels[i];
       const bool intersecting = exclude_new_intersections(c, labels, touched, excluded);
       const bool folding = exclude_new_folds(c, labels, previous, excluded);
-      const bool breaking = exclude_distance_breaks(c, labels, previous, excluded);
+      const bool breaking = exclude_distance_breaks(c, labels, previous, excluded, checked, checked_labels);
+      checked_labels = labels;
       const bool decided = !intersecting && !folding && !breaking;
       if(decided && take_candidates(c, labels, touched))
         return moved;
@@ -503,10 +504,14 @@ private:
 
   // With the labelled candidates taken (`previous` the positions before): false when the faces
   // around every vertex that moved keep the distance bound, else the candidates of the moved
-  // vertices of those faces excluded and true. Each candidate kept it alone (propose_candidates()):
-  // only a vertex that moved next to another that moved needs a look.
+  // vertices of those faces excluded and true. Each candidate kept it alone, the faces around its
+  // own staying (propose_candidates()): only a vertex with another move among the vertices of those
+  // faces needs a look. `checked` (by variable) flags the moves found to keep the bound under
+  // `checked_labels`, the labels of the last decision: while no label among those vertices changes,
+  // the answer stands.
   bool exclude_distance_breaks(const Candidate_set& c, const std::vector<char>& labels,
-                               const std::vector<Vector_3d>& previous, std::vector<char>& excluded)
+                               const std::vector<Vector_3d>& previous, std::vector<char>& excluded,
+                               std::vector<char>& checked, const std::vector<char>& checked_labels)
   {
     if(!m_bound.active())
       return false;
@@ -514,17 +519,30 @@ private:
       const std::size_t i = c.variable[std::size_t(u)];
       return i != Relocation_cut::none && labels[i];
     };
+    const auto relabelled = [&](Vertex u) {
+      const std::size_t i = c.variable[std::size_t(u)];
+      return i != Relocation_cut::none && labels[i] != checked_labels[i];
+    };
     const auto before = [&](Vertex u) { return moved(u) ? previous[c.variable[std::size_t(u)]] : position(u); };
     std::vector<Vertex> breaking;
     collect_by_blocks(c.moving.size(), breaking, [&](std::size_t i, std::vector<Vertex>& found) {
       const Vertex v = c.moving[i];
+      const bool was_checked = checked[i];
+      checked[i] = labels[i];
       if(!labels[i])
         return;
-      bool next_to_a_move = false;
+      bool near_a_move = false, changed = !was_checked;
       for(Vertex w : vertices_around_target(m_mesh.halfedge(v), m_mesh))
-        next_to_a_move = next_to_a_move || moved(w);
-      if(next_to_a_move && !m_bound.allows_moved_star(m_mesh, v, before))
+        for(Vertex u : vertices_around_target(m_mesh.halfedge(w), m_mesh))
+        {
+          near_a_move = near_a_move || (u != v && moved(u));
+          changed = changed || relabelled(u);
+        }
+      if(near_a_move && changed && !m_bound.allows_moved_star(m_mesh, v, before))
+      {
+        checked[i] = 0;
         found.push_back(v);
+      }
     });
     for(Vertex v : breaking)
     {
