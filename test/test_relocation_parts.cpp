@@ -868,6 +868,82 @@ TEST(Distance_bound, InputCoveredByTheTrianglesThatReplaceAStar)
   }
 }
 
+// The input goes on 1.5 bounds beyond the mesh's border: its points there, about the bound from the
+// border, are as near to the border's sides after a move that keeps them as before (the cells at
+// the bound cannot be told apart by distances alone).
+TEST(Distance_bound, InputBeyondABorderSideThatStays)
+{
+  for(double scale : {1e-2, 1.0, 1e2})
+  {
+    const double bound = 0.01 * scale;
+    const Work_mesh grid = to_work_mesh(make_grid(7, 7, [scale](std::size_t i, std::size_t j) {
+      return Point(scale * double(i) / 6, scale * double(j) / 6, 0);
+    }));
+    const Work_mesh input = to_work_mesh(make_grid(8, 7, [scale, bound](std::size_t i, std::size_t j) {
+      return Point(i < 7 ? scale * double(i) / 6 : scale + 1.5 * bound, scale * double(j) / 6, 0);
+    }));
+    const GR::Distance_bound check(input, bound);
+    const Work_mesh::Vertex_index next_to_border(3 * 7 + 5);
+    ASSERT_EQ(vec(grid.point(next_to_border)), Vector_3d(scale * 5 / 6, scale / 2, 0));
+    const std::vector<GR::Triangle_3d> before = star(grid, next_to_border, vec(grid.point(next_to_border)));
+    std::vector<GR::Triangle_3d> around;
+    for(auto f : grid.faces())
+    {
+      const auto v = GR::face_vertices(grid, f);
+      if(std::find(v.begin(), v.end(), next_to_border) == v.end())
+        around.push_back(GR::Triangle_3d{{vec(grid.point(v[0])), vec(grid.point(v[1])), vec(grid.point(v[2]))}});
+    }
+    auto covered = [&](const Vector_3d& step) {
+      return check.input_covered(before, star(grid, next_to_border, vec(grid.point(next_to_border)) + step), around);
+    };
+    EXPECT_TRUE(covered(Vector_3d(-0.02 * scale, 0.01 * scale, 0))) << "scale " << scale;
+    EXPECT_TRUE(covered(Vector_3d(0, 0, 0.5 * bound))) << "scale " << scale;
+    EXPECT_FALSE(covered(Vector_3d(0, 0, 1.05 * bound))) << "scale " << scale;
+  }
+}
+
+// The answer yes is never wrong: after a random move of a vertex of the input itself, every sampled
+// input point within the bound of the star before is within it of the star after or of the rest.
+TEST(Distance_bound, InputCoveredOnlyWhenItIs)
+{
+  CGAL::Random rng(7);
+  const Work_mesh sphere = to_work_mesh(make_sphere(2));
+  const std::vector<GR::Triangle_3d> input = mesh_triangles(sphere);
+  const double bound = 0.02;
+  const GR::Distance_bound check(sphere, bound);
+  int yes = 0;
+  for(int trial = 0; trial < 200; ++trial)
+  {
+    const Work_mesh::Vertex_index v(rng.get_int(0, int(sphere.number_of_vertices())));
+    const Vector_3d moved = vec(sphere.point(v)) + rng.get_double(0, 3 * bound) * random_unit(rng);
+    const std::vector<GR::Triangle_3d> before = star(sphere, v, vec(sphere.point(v)));
+    std::vector<GR::Triangle_3d> cover = star(sphere, v, moved);
+    for(auto f : sphere.faces())
+    {
+      const auto u = GR::face_vertices(sphere, f);
+      if(std::find(u.begin(), u.end(), v) == u.end())
+        cover.push_back(GR::Triangle_3d{{vec(sphere.point(u[0])), vec(sphere.point(u[1])), vec(sphere.point(u[2]))}});
+    }
+    if(!check.input_covered(before, std::vector<GR::Triangle_3d>(cover.begin(), cover.begin() + before.size()),
+                            std::vector<GR::Triangle_3d>(cover.begin() + before.size(), cover.end())))
+      continue;
+    ++yes;
+    double worst = 0;
+    for(const GR::Triangle_3d& t : GR::triangles_in(input, GR::triangles_box(before, bound)))
+      for(int i = 0, n = 24; i <= n; ++i)
+        for(int j = 0; i + j <= n; ++j)
+        {
+          const Vector_3d x = (1 - double(i + j) / n) * t[0] + double(i) / n * t[1] + double(j) / n * t[2];
+          if(GR::distance_to_triangles(x, before) <= bound)
+            worst = (std::max)(worst, GR::distance_to_triangles(x, cover));
+        }
+    EXPECT_LE(worst, bound) << "trial " << trial;
+  }
+  std::cout << yes << " of 200 moves accepted\n";
+  EXPECT_GT(yes, 40);
+  EXPECT_LT(yes, 190);
+}
+
 // ------------------------------------------------------------------------------------------------
 
 TEST(Candidates, FreedomRadiusAndCoolingSchedule)

@@ -232,112 +232,300 @@ inline Convex_polygon clipped_to_box(const Convex_polygon& polygon, const CGAL::
   return in;
 }
 
+// Whether every point of the convex polygon is beyond `bound` of t: along t's normal, or along the
+// way from t's point nearest the polygon's centre to that centre, the two lie more than the bound
+// apart.
+inline bool beyond_bound(const Convex_polygon& polygon, const Triangle_3d& t, double bound)
+{
+  Vector_3d centre;
+  polygon_radius(polygon, centre);
+  std::array<double, 3> barycentric;
+  std::array<Vector_3d, 2> axis{{(t[1] - t[0]).cross(t[2] - t[0]),
+                                 centre - closest_point_on_triangle(centre, t[0], t[1], t[2], barycentric)}};
+  for(Vector_3d u : axis)
+  {
+    const double length = u.norm();
+    if(!(length > 0))
+      continue;
+    u /= length;
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for(const Vector_3d& x : polygon)
+    {
+      low = (std::min)(low, u.dot(x));
+      high = (std::max)(high, u.dot(x));
+    }
+    const double t_low = (std::min)({u.dot(t[0]), u.dot(t[1]), u.dot(t[2])});
+    const double t_high = (std::max)({u.dot(t[0]), u.dot(t[1]), u.dot(t[2])});
+    if(low - t_high > bound || t_low - high > bound)
+      return true;
+  }
+  return false;
+}
+
+// The part of the convex polygon that can be within `bound` of the triangle t: inside the prism
+// of t grown sideways by the bound, within the bound of t's plane (all of it for a degenerate t).
+inline Convex_polygon clipped_to_neighbourhood(const Convex_polygon& polygon, const Triangle_3d& t, double bound)
+{
+  Vector_3d n = (t[1] - t[0]).cross(t[2] - t[0]);
+  const double length = n.norm();
+  if(!(length > 0))
+    return polygon;
+  n /= length;
+  Convex_polygon in = polygon, inside, outside;
+  split_polygon(in, n, n.dot(t[0]) - bound, inside, outside);
+  split_polygon(inside, -n, -n.dot(t[0]) - bound, in, outside);
+  for(int j = 0; j < 3 && !in.empty(); ++j)
+  {
+    const Vector_3d& a = t[j];
+    Vector_3d side = (t[(j + 1) % 3] - a).cross(n);
+    if(side.dot(t[(j + 2) % 3] - a) > 0)
+      side = -side;
+    side.normalize();
+    split_polygon(in, -side, -side.dot(a) - bound, inside, outside);
+    in = inside;
+  }
+  return in;
+}
+
+// Which corners and sides of a removed triangle are also corners and sides of the cover (exactly:
+// they stayed where they were).
+struct Shared_parts
+{
+  std::array<bool, 3> corner{{false, false, false}};
+  std::array<bool, 3> side{{false, false, false}}; // side k joins corners k and k + 1
+};
+
+inline Shared_parts shared_parts(const Triangle_3d& t, const std::vector<Triangle_3d>& cover)
+{
+  Shared_parts shared;
+  for(const Triangle_3d& c : cover)
+  {
+    std::array<bool, 3> in{{false, false, false}};
+    for(int k = 0; k < 3; ++k)
+      in[k] = t[k] == c[0] || t[k] == c[1] || t[k] == c[2];
+    for(int k = 0; k < 3; ++k)
+    {
+      shared.corner[k] = shared.corner[k] || in[k];
+      shared.side[k] = shared.side[k] || (in[k] && in[(k + 1) % 3]);
+    }
+  }
+  return shared;
+}
+
+// Whether the point of t nearest to any point of the convex polygon lies on a shared part of t
+// (then the cover, which holds that part, is at least as near), or every point of the polygon is
+// beyond `bound` of t. Each test is one Voronoi region of t, convex: the corners decide.
+inline bool nearest_on_shared_parts(const Convex_polygon& polygon, const Triangle_3d& t, const Shared_parts& shared,
+                                    double bound)
+{
+  Vector_3d centre;
+  const double radius = polygon_radius(polygon, centre);
+  if(distance_to_triangle(centre, t) - radius > bound)
+    return true;
+  const Vector_3d normal = (t[1] - t[0]).cross(t[2] - t[0]);
+  const auto all = [&](const auto& in_region) { return std::all_of(polygon.begin(), polygon.end(), in_region); };
+  for(int k = 0; k < 3; ++k)
+  {
+    const Vector_3d &a = t[k], &b = t[(k + 1) % 3], &c = t[(k + 2) % 3];
+    if(shared.corner[k] && all([&](const Vector_3d& x) { return (x - a).dot(b - a) <= 0 && (x - a).dot(c - a) <= 0; }))
+      return true;
+    Vector_3d out = (b - a).cross(normal);
+    if(out.dot(c - a) > 0)
+      out = -out;
+    if(shared.side[k] && normal.squaredNorm() > 0 &&
+       all([&](const Vector_3d& x) { return (x - a).dot(out) >= 0 && (x - a).dot(b - a) >= 0 && (x - b).dot(a - b) >= 0; }))
+      return true;
+    // With no obtuse angle at a or b, beyond the side's line the nearest point is on the side.
+    if(shared.side[k] && normal.squaredNorm() > 0 && (b - a).dot(c - a) >= 0 && (a - b).dot(c - b) >= 0 &&
+       all([&](const Vector_3d& x) { return (x - a).dot(out) >= 0; }))
+      return true;
+  }
+  return false;
+}
+
+// The triangles whose neighbourhood matters (the removed ones) and which of their parts the cover
+// keeps.
+struct Relevant_triangles
+{
+  std::vector<Triangle_3d> triangles;
+  std::vector<Shared_parts> shared;
+
+  // Those that reach into the box.
+  Relevant_triangles in(const CGAL::Bbox_3& box) const
+  {
+    Relevant_triangles here;
+    for(std::size_t i = 0; i < triangles.size(); ++i)
+      if(triangle_meets_box(triangles[i], box))
+      {
+        here.triangles.push_back(triangles[i]);
+        here.shared.push_back(shared[i]);
+      }
+    return here;
+  }
+};
+
+// Whether no point of the cell is within `bound` of a relevant triangle: by the centre and radius,
+// or a separating axis for each.
+inline bool out_of_reach(const Convex_polygon& cell, const Relevant_triangles& relevant, double bound)
+{
+  Vector_3d centre;
+  const double radius = polygon_radius(cell, centre);
+  return distance_to_triangles(centre, relevant.triangles) - radius > bound ||
+         std::all_of(relevant.triangles.begin(), relevant.triangles.end(),
+                     [&](const Triangle_3d& r) { return beyond_bound(cell, r, bound); });
+}
+
+inline bool corners_within(const Convex_polygon& polygon, const Triangle_3d& t, double bound)
+{
+  return std::all_of(polygon.begin(), polygon.end(), [&](const Vector_3d& x) { return distance_to_triangle(x, t) <= bound; });
+}
+
+// Whether the part of the cell each relevant triangle can reach (clipped_to_neighbourhood()) lies
+// within `bound` of one cover triangle: the cell's own (`below`) or the one nearest that part.
+inline bool reach_covered(const Convex_polygon& cell, const Relevant_triangles& relevant,
+                          const std::vector<Triangle_3d>& cover, std::size_t below, double bound)
+{
+  return std::all_of(relevant.triangles.begin(), relevant.triangles.end(), [&](const Triangle_3d& r) {
+    const Convex_polygon reach = clipped_to_neighbourhood(cell, r, bound);
+    if(reach.empty())
+      return true;
+    Vector_3d centre;
+    polygon_radius(reach, centre);
+    std::size_t nearest = 0;
+    distance_to_triangles(centre, cover, &nearest);
+    return (below < cover.size() && corners_within(reach, cover[below], bound)) ||
+           corners_within(reach, cover[nearest], bound);
+  });
+}
+
+// Whether, for each relevant triangle, the cell is beyond `bound` of it or nearest to it on parts
+// the cover keeps (then the cover is as near).
+inline bool nearest_on_kept_parts(const Convex_polygon& cell, const Relevant_triangles& relevant, double bound)
+{
+  for(std::size_t k = 0; k < relevant.triangles.size(); ++k)
+    if(!nearest_on_shared_parts(cell, relevant.triangles[k], relevant.shared[k], bound))
+      return false;
+  return true;
+}
+
+// The cell cut into smaller triangles: a fan, each cut into four at its midpoints.
+inline std::vector<Triangle_3d> halved(const Convex_polygon& cell)
+{
+  std::vector<Triangle_3d> parts;
+  for(std::size_t k = 1; k + 1 < cell.size(); ++k)
+  {
+    const Vector_3d &a = cell[0], &b = cell[k], &c = cell[k + 1];
+    const Vector_3d ab = (a + b) / 2, bc = (b + c) / 2, ca = (c + a) / 2;
+    parts.insert(parts.end(), {Triangle_3d{{a, ab, ca}}, Triangle_3d{{ab, b, bc}}, Triangle_3d{{ca, bc, c}},
+                               Triangle_3d{{ab, bc, ca}}});
+  }
+  return parts;
+}
+
+inline bool within_bound(const Convex_polygon& whole_piece, const std::vector<Triangle_3d>& all_cover,
+                         const Vector_3d& up, double bound, const Relevant_triangles* all_relevant, int depth,
+                         bool first_try);
+
+// within_bound() for the cells below the triangles of `cover` along `up`, each measured first at its
+// corners, then by the settling tests, then halved (up to six times: still undecided, it fails).
+inline bool cells_within_bound(const Convex_polygon& piece, const std::vector<Triangle_3d>& cover,
+                               const Vector_3d& up, double bound, const Relevant_triangles* relevant, int depth)
+{
+  constexpr int max_depth = 6;
+  for(Bounded_cell& cell : cells_below(piece, cover, up))
+  {
+    Vector_3d centre;
+    const double radius = polygon_radius(cell.polygon, centre);
+    if(relevant && out_of_reach(cell.polygon, *relevant, bound))
+      continue;
+    const double at_centre =
+      distance_to_triangles(centre, cover, cell.triangle >= cover.size() ? &cell.triangle : nullptr);
+    if(at_centre + radius <= bound || corners_within(cell.polygon, cover[cell.triangle], bound))
+      continue; // the distance to the cover changes by at most the radius across the cell
+    if(relevant && (reach_covered(cell.polygon, *relevant, cover, cell.triangle, bound) ||
+                    nearest_on_kept_parts(cell.polygon, *relevant, bound)))
+      continue;
+    // A centre beyond the bound that matters refutes the piece; one that does not, settles nothing.
+    if((at_centre > bound && (!relevant || distance_to_triangles(centre, relevant->triangles) <= bound)) ||
+       depth == max_depth)
+      return false;
+    for(const Triangle_3d& q : halved(cell.polygon))
+      if(!within_bound(Convex_polygon(q.begin(), q.end()), cover, up, bound, relevant, depth + 1, true))
+        return false;
+  }
+  return true;
+}
+
+// within_bound() for the cells below the cover triangle nearest the piece's centre and those nearest
+// its corners beyond the bound of that one; what those leave goes to all of the cover.
+inline bool within_bound_of_nearest(const Convex_polygon& piece, const std::vector<Triangle_3d>& cover,
+                                    std::size_t nearest, const Vector_3d& up, double bound,
+                                    const Relevant_triangles* relevant, int depth)
+{
+  std::vector<std::size_t> taken(1, nearest);
+  for(const Vector_3d& x : piece)
+    if(distance_to_triangle(x, cover[nearest]) > bound)
+    {
+      std::size_t k = 0;
+      distance_to_triangles(x, cover, &k);
+      if(std::find(taken.begin(), taken.end(), k) == taken.end())
+        taken.push_back(k);
+    }
+  std::vector<Triangle_3d> nearest_to_corners;
+  for(std::size_t k : taken)
+    nearest_to_corners.push_back(cover[k]);
+  for(const Bounded_cell& cell : cells_below(piece, nearest_to_corners, up))
+  {
+    // A cell below none of them is measured to the triangle nearest its centre.
+    std::size_t below = cell.triangle < taken.size() ? taken[cell.triangle] : 0;
+    if(cell.triangle >= taken.size())
+    {
+      Vector_3d centre;
+      polygon_radius(cell.polygon, centre);
+      distance_to_triangles(centre, cover, &below);
+    }
+    if(!corners_within(cell.polygon, cover[below], bound) &&
+       !within_bound(cell.polygon, cover, up, bound, relevant, depth, false))
+      return false;
+  }
+  return true;
+}
+
 // Whether every point of the convex polygon `piece` is within `bound` of the triangles of `cover`
 // (with `relevant`, only the points within `bound` of those triangles need be: the others are
 // within it of triangles that stay). `up` is the direction along which cells are cut. Only the
 // triangles within `bound` of the piece's box count.
 inline bool within_bound(const Convex_polygon& whole_piece, const std::vector<Triangle_3d>& all_cover,
-                         const Vector_3d& up, double bound, const std::vector<Triangle_3d>* all_relevant,
+                         const Vector_3d& up, double bound, const Relevant_triangles* all_relevant,
                          int depth = 0, bool first_try = true)
 {
-  constexpr int max_depth = 6;
-  std::vector<Triangle_3d> relevant_here;
+  Relevant_triangles relevant_here;
   Convex_polygon piece = whole_piece;
   if(all_relevant)
   {
     // Only the part of the piece within the bound of a relevant triangle matters.
-    relevant_here = triangles_in(*all_relevant, polygon_box(whole_piece, bound));
-    if(relevant_here.empty())
+    relevant_here = all_relevant->in(polygon_box(whole_piece, bound));
+    if(relevant_here.triangles.empty())
       return true;
-    piece = clipped_to_box(whole_piece, triangles_box(relevant_here, bound));
+    piece = clipped_to_box(whole_piece, triangles_box(relevant_here.triangles, bound));
     if(piece.empty())
       return true;
   }
-  const CGAL::Bbox_3 box = polygon_box(piece, bound);
-  const std::vector<Triangle_3d>* relevant = all_relevant ? &relevant_here : nullptr;
-  const std::vector<Triangle_3d> cover = triangles_in(all_cover, box);
+  const Relevant_triangles* relevant = all_relevant ? &relevant_here : nullptr;
+  const std::vector<Triangle_3d> cover = triangles_in(all_cover, polygon_box(piece, bound));
   Vector_3d centre;
   const double radius = polygon_radius(piece, centre);
-  if(relevant && distance_to_triangles(centre, *relevant) - radius > bound)
+  if(relevant && distance_to_triangles(centre, relevant->triangles) - radius > bound)
     return true;
   if(cover.empty())
     return false;
   // Most pieces lie within the bound of the one triangle nearest their centre.
   std::size_t nearest = 0;
-  if(distance_to_triangles(centre, cover, &nearest) + radius <= bound)
+  if(distance_to_triangles(centre, cover, &nearest) + radius <= bound || corners_within(piece, cover[nearest], bound))
     return true;
-  Convex_polygon far;
-  for(const Vector_3d& x : piece)
-    if(distance_to_triangle(x, cover[nearest]) > bound)
-      far.push_back(x);
-  if(far.empty())
-    return true;
-  // Most others lie within it of that triangle and of those nearest the corners beyond it: cells
-  // below those first, the cells those leave to all triangles.
-  if(first_try)
-  {
-    std::vector<Triangle_3d> nearest_to_corners(1, cover[nearest]);
-    std::vector<std::size_t> taken(1, nearest);
-    for(const Vector_3d& x : far)
-    {
-      std::size_t k = 0;
-      distance_to_triangles(x, cover, &k);
-      if(std::find(taken.begin(), taken.end(), k) == taken.end())
-      {
-        taken.push_back(k);
-        nearest_to_corners.push_back(cover[k]);
-      }
-    }
-    for(const Bounded_cell& cell : cells_below(piece, nearest_to_corners, up))
-    {
-      // A cell below none of them is measured to the triangle nearest its centre.
-      const Triangle_3d* below = cell.triangle < nearest_to_corners.size() ? &nearest_to_corners[cell.triangle] : nullptr;
-      if(!below)
-      {
-        Vector_3d cell_centre;
-        polygon_radius(cell.polygon, cell_centre);
-        std::size_t k = 0;
-        distance_to_triangles(cell_centre, cover, &k);
-        below = &cover[k];
-      }
-      if(!std::all_of(cell.polygon.begin(), cell.polygon.end(),
-                      [&](const Vector_3d& x) { return distance_to_triangle(x, *below) <= bound; }) &&
-         !within_bound(cell.polygon, cover, up, bound, relevant, depth, false))
-        return false;
-    }
-    return true;
-  }
-  for(Bounded_cell& cell : cells_below(piece, cover, up))
-  {
-    const double cell_radius = polygon_radius(cell.polygon, centre);
-    const double from_relevant = relevant ? distance_to_triangles(centre, *relevant) : 0;
-    if(from_relevant - cell_radius > bound)
-      continue;
-    const double at_centre = distance_to_triangles(centre, cover, cell.triangle >= cover.size() ? &cell.triangle : nullptr);
-    if(at_centre + cell_radius <= bound)
-      continue; // the distance to the cover changes by at most the radius across the cell
-    bool corners_within = true;
-    for(const Vector_3d& x : cell.polygon)
-      corners_within = corners_within && distance_to_triangle(x, cover[cell.triangle]) <= bound;
-    if(corners_within)
-      continue;
-    // A centre beyond the bound that matters refutes the piece; one that does not, settles nothing.
-    if((at_centre > bound && from_relevant <= bound) || depth == max_depth)
-      return false;
-    // Halve the cell: a fan of triangles, each cut into four at its midpoints.
-    for(std::size_t k = 1; k + 1 < cell.polygon.size(); ++k)
-    {
-      const Vector_3d& a = cell.polygon[0];
-      const Vector_3d& b = cell.polygon[k];
-      const Vector_3d& c = cell.polygon[k + 1];
-      const Vector_3d ab = (a + b) / 2, bc = (b + c) / 2, ca = (c + a) / 2;
-      for(const Triangle_3d& q : {Triangle_3d{{a, ab, ca}}, Triangle_3d{{ab, b, bc}}, Triangle_3d{{ca, bc, c}},
-                                  Triangle_3d{{ab, bc, ca}}})
-        if(!within_bound(Convex_polygon(q.begin(), q.end()), cover, up, bound, relevant, depth + 1))
-          return false;
-    }
-  }
-  return true;
+  // Most others lie within it of that triangle and of those nearest the corners beyond it.
+  return first_try ? within_bound_of_nearest(piece, cover, nearest, up, bound, relevant, depth)
+                   : cells_within_bound(piece, cover, up, bound, relevant, depth);
 }
 
 inline Vector_3d triangle_normal(const Triangle_3d& t)
@@ -413,8 +601,21 @@ public:
       return true;
     std::vector<Triangle_3d> cover = created;
     cover.insert(cover.end(), around.begin(), around.end());
-    for(const Triangle_3d& t : input_triangles_in(triangles_box(removed, m_bound)))
-      if(!within_bound(Convex_polygon(t.begin(), t.end()), cover, triangle_normal(t), m_bound, &removed))
+    // A removed triangle made again as it was changes nothing.
+    std::vector<Triangle_3d> changed;
+    for(const Triangle_3d& r : removed)
+      if(std::none_of(created.begin(), created.end(), [&](const Triangle_3d& c) {
+           return std::all_of(r.begin(), r.end(), [&](const Vector_3d& x) { return x == c[0] || x == c[1] || x == c[2]; });
+         }))
+        changed.push_back(r);
+    if(changed.empty())
+      return true;
+    Relevant_triangles relevant;
+    relevant.triangles = changed;
+    for(const Triangle_3d& r : changed)
+      relevant.shared.push_back(shared_parts(r, cover));
+    for(const Triangle_3d& t : input_triangles_in(triangles_box(changed, m_bound)))
+      if(!within_bound(Convex_polygon(t.begin(), t.end()), cover, triangle_normal(t), m_bound, &relevant))
         return false;
     return true;
   }
