@@ -731,23 +731,31 @@ private:
     return Triangle_3d{{position(m, v[0]), position(m, v[1]), position(m, v[2])}};
   }
 
-  // The faces that share a vertex with one of `faces` and are not among them.
+  // The faces within two rings of `faces` (sharing a vertex with one of them, or with one of
+  // those) and not among them. One ring is too few where the mesh's two sides of a thin part lie
+  // within the bound of each other (blade's trailing edge, manual).
   template <typename Faces>
   static std::vector<Triangle_3d> triangles_around(const Work_mesh& m, const Faces& faces)
   {
     std::vector<Triangle_3d> around;
-    boost::container::small_vector<Face, 32> seen(faces.begin(), faces.end());
-    for(Face f : faces)
-      for(Vertex u : face_vertices(m, f))
-        for(Halfedge g : halfedges_around_target(m.halfedge(u), m))
-        {
-          const Face h = m.face(g);
-          if(h != Work_mesh::null_face() && std::find(seen.begin(), seen.end(), h) == seen.end())
+    std::vector<Face> seen(faces.begin(), faces.end());
+    std::size_t ring_begin = 0;
+    for(int ring = 0; ring < 2; ++ring)
+    {
+      const std::size_t ring_end = seen.size();
+      for(std::size_t i = ring_begin; i < ring_end; ++i)
+        for(Vertex u : face_vertices(m, seen[i]))
+          for(Halfedge g : halfedges_around_target(m.halfedge(u), m))
           {
-            seen.push_back(h);
-            around.push_back(triangle(m, h));
+            const Face h = m.face(g);
+            if(h != Work_mesh::null_face() && std::find(seen.begin(), seen.end(), h) == seen.end())
+            {
+              seen.push_back(h);
+              around.push_back(triangle(m, h));
+            }
           }
-        }
+      ring_begin = ring_end;
+    }
     return around;
   }
 

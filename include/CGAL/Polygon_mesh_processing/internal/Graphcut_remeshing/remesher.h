@@ -532,12 +532,15 @@ private:
       if(!labels[i])
         return;
       bool near_a_move = false, changed = !was_checked;
+      // The faces around a star are two rings wide (Distance_bound::triangles_around()): their
+      // vertices are within three rings of v.
       for(Vertex w : vertices_around_target(m_mesh.halfedge(v), m_mesh))
-        for(Vertex u : vertices_around_target(m_mesh.halfedge(w), m_mesh))
-        {
-          near_a_move = near_a_move || (u != v && moved(u));
-          changed = changed || relabelled(u);
-        }
+        for(Vertex x : vertices_around_target(m_mesh.halfedge(w), m_mesh))
+          for(Vertex u : vertices_around_target(m_mesh.halfedge(x), m_mesh))
+          {
+            near_a_move = near_a_move || (u != v && moved(u));
+            changed = changed || relabelled(u);
+          }
       if(near_a_move && changed && !m_bound.allows_moved_star(m_mesh, v, before))
       {
         checked[i] = 0;
